@@ -1,0 +1,51 @@
+#pragma once
+// A wall the fluid feels, given as a surface mesh: segments in 2D, triangles in 3D.
+// This is the interface through which bodies load the fluid and the fluid loads bodies
+// (coupling/): each step the owner moves the vertices, the solver computes the fluid
+// forces, and reports the reaction on every vertex, distributed with the same weights
+// (barycentric on the face) that placed the contact point, so that the momentum the
+// fluid loses is exactly the momentum the wall gains.
+
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace chipflex::sph
+{
+enum class WallModel
+{
+  lennard_jones,  ///< the seed paper's modified Lennard-Jones force (DESIGN.md)
+  dummy_particles ///< layers of dummy particles that move with the surface
+};
+
+/// Parameters of the modified Lennard-Jones wall force
+///   F(d) = k ((R-d)^4 - (R-r0)^2 (R-d)^2) / (R^2 r0 (2R - r0))  for d <= R, else 0,
+/// per unit of particle mass (an acceleration, m/s^2) acting along the wall normal.
+struct LennardJonesParameters
+{
+  double k = 0;  ///< force scale F(0) (0: derive from spacing and expected pressure)
+  double R = 0;  ///< cut-off distance (0: derive from the particle spacing)
+  double r0 = 0; ///< equilibrium distance, F(r0) = 0 (0: derive from the particle spacing)
+};
+
+template <int dim>
+struct WallSurface
+{
+  using Vector = Eigen::Matrix<double, dim, 1>;
+
+  std::string name;
+  WallModel model = WallModel::lennard_jones;
+  LennardJonesParameters lennard_jones;
+  /// Vertex positions and velocities in world coordinates.
+  std::vector<Vector> vertices;
+  std::vector<Vector> velocities;
+  /// Vertex ids of each face; 2D: (a, b) with the fluid side on the left of a -> b
+  /// (outward normal (dy, -dx) of a body traversed counter-clockwise);
+  /// 3D: (a, b, c) with the outward normal (b - a) x (c - a).
+  std::vector<std::array<int, dim>> faces;
+  /// A permeable barrier: bodies feel it, the fluid does not (coupling/ only).
+  bool fluid_passes = false;
+};
+} // namespace chipflex::sph
