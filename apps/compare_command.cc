@@ -1,10 +1,109 @@
+// `chipflex compare MESH.msh BODY.h5 --load force:GROUP:fx,fy[,fz]`: can the reduced body be
+// trusted for this load? Static and step-load responses of the full FE model against the
+// reduced body (fem/reduce.h). Runs under mpirun too; only rank 0 prints and writes.
+
+#include "apps/command_line.h"
 #include "apps/commands.h"
+#include "common/atomic_output.h"
 #include "common/input_error.h"
+#include "fem/reduce.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <fstream>
+#include <iomanip>
+#include <iostream>
 
 namespace chipflex::apps
 {
-int compare_command(const Arguments&)
+int compare_command(const Arguments& args)
 {
-  throw InputError("chipflex compare", "not built yet");
+  CommandLine cl("chipflex compare MESH.msh BODY.h5 --load force:GROUP:fx,fy[,fz] [options]",
+                 "Compare a clamped reduced body with the full FE model: static response and a\n"
+                 "step load (Newmark average acceleration) on both, at the centroid of the loaded\n"
+                 "group's nodes.");
+  cl.add_positional("MESH", "the mesh the body was reduced from");
+  cl.add_positional("BODY", "body file from chipflex reduce (clamped)");
+  cl.add_option("--load", "LOAD", "force:GROUP:fx,fy[,fz] (total force, N; 2D: N/m)", "", true);
+  cl.add_option("--duration", "S", "transient length (default: 5 periods of the lowest mode)");
+  cl.add_option("--dt", "S", "time step (default: 1/40 of the lowest mode's period)");
+  cl.add_flag("--json", "print one JSON object");
+  cl.add_option("--output", "CSV", "time histories of both models");
+  cl.add_alias("-o", "--output");
+  if (!cl.parse(args))
+    return 0;
+  fem::CompareSettings settings;
+  settings.mesh_file = cl.get("MESH");
+  settings.body_file = cl.get("BODY");
+  settings.load = cl.get("--load");
+  if (cl.has("--duration") && !((settings.duration = cl.get_double("--duration")) > 0))
+    throw InputError("--duration", "must be positive");
+  if (cl.has("--dt") && !((settings.time_step = cl.get_double("--dt")) > 0))
+    throw InputError("--dt", "must be positive");
+
+  int argc = 1;
+  std::string name = "chipflex";
+  char* argv_storage[] = {name.data(), nullptr};
+  char** argv = argv_storage;
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const auto result = fem::compare_with_full(settings);
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+    return 0;
+
+  const int dim = result.static_full.size();
+  if (cl.has("--output"))
+  {
+    const std::string path = cl.get("--output");
+    AtomicOutput output(path);
+    {
+      std::ofstream out(output.temporary_path());
+      const char* axis[] = {"x", "y", "z"};
+      out << "time_s";
+      for (const char* side : {"full", "reduced"})
+        for (int d = 0; d < dim; ++d)
+          out << "," << side << "_u" << axis[d] << "_m";
+      out << "\n" << std::setprecision(12);
+      for (std::size_t s = 0; s < result.time.size(); ++s)
+      {
+        out << result.time[s];
+        for (int d = 0; d < dim; ++d)
+          out << "," << result.transient_full(s, d);
+        for (int d = 0; d < dim; ++d)
+          out << "," << result.transient_reduced(s, d);
+        out << "\n";
+      }
+      if (!out)
+        throw InputError(path, "cannot write");
+    }
+    output.commit();
+  }
+  std::cout << std::setprecision(6);
+  if (cl.flag("--json"))
+  {
+    std::cout << "{\n  \"static_rel_error\": " << result.static_rel_error
+              << ",\n  \"transient_rel_error\": " << result.transient_rel_error
+              << ",\n  \"full_seconds\": " << result.full_seconds
+              << ",\n  \"reduced_seconds\": " << result.reduced_seconds
+              << ",\n  \"static_full_m\": [";
+    for (int d = 0; d < dim; ++d)
+      std::cout << (d ? ", " : "") << result.static_full[d];
+    std::cout << "],\n  \"static_reduced_m\": [";
+    for (int d = 0; d < dim; ++d)
+      std::cout << (d ? ", " : "") << result.static_reduced[d];
+    std::cout << "],\n  \"n_steps\": " << result.time.size() - 1
+              << ",\n  \"dt\": " << (result.time.size() > 1 ? result.time[1] : 0.) << "\n}\n";
+  }
+  else
+  {
+    std::cout << "load " << settings.load << ", centroid of '" << result.group << "'\n"
+              << "  static     full " << result.static_full.transpose() << " m, reduced "
+              << result.static_reduced.transpose() << " m, relative error "
+              << result.static_rel_error << "\n"
+              << "  transient  " << result.time.size() - 1 << " steps of " << result.time[1]
+              << " s: max relative error " << result.transient_rel_error << "\n"
+              << "  seconds    full " << result.full_seconds << ", reduced "
+              << result.reduced_seconds << " (" << result.reduced_integrator << ")\n";
+  }
+  return 0;
 }
 } // namespace chipflex::apps

@@ -1,10 +1,124 @@
+// `chipflex info BODY.h5 [--json]`: what a body file holds, for people and for scripts.
+
+#include "apps/command_line.h"
 #include "apps/commands.h"
-#include "common/input_error.h"
+#include "common/reduced_body_file.h"
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
 
 namespace chipflex::apps
 {
-int info_command(const Arguments&)
+namespace
 {
-  throw InputError("chipflex info", "not built yet");
+std::string quoted(const std::string& s)
+{
+  std::ostringstream out;
+  out << '"';
+  for (const char c : s)
+    if (c == '"' || c == '\\')
+      out << '\\' << c;
+    else if (static_cast<unsigned char>(c) < 0x20)
+      out << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c) << std::dec;
+    else
+      out << c;
+  out << '"';
+  return out.str();
+}
+
+template <typename Vector>
+std::string list(const Vector& v, int n)
+{
+  std::ostringstream out;
+  out << std::setprecision(17) << "[";
+  for (int i = 0; i < n; ++i)
+    out << (i ? ", " : "") << v[i];
+  out << "]";
+  return out.str();
+}
+
+void print_json(const ReducedBodyData& b)
+{
+  std::ostringstream o;
+  o << std::setprecision(17) << "{\n";
+  o << "  \"format_version\": " << ReducedBodyData::format_version << ",\n";
+  o << "  \"dim\": " << b.dim << ",\n";
+  o << "  \"model\": " << quoted(b.model) << ",\n";
+  o << "  \"youngs_modulus\": " << b.youngs_modulus << ",\n";
+  o << "  \"poisson_ratio\": " << b.poisson_ratio << ",\n";
+  o << "  \"density\": " << b.density << ",\n";
+  o << "  \"element_degree\": " << b.element_degree << ",\n";
+  o << "  \"mesh_file\": " << quoted(b.mesh_file) << ",\n";
+  o << "  \"mesh_hash\": " << quoted(b.mesh_hash) << ",\n";
+  o << "  \"clamp_set\": " << quoted(b.clamp_set) << ",\n";
+  o << "  \"mass\": " << b.mass << ",\n";
+  o << "  \"center_of_mass\": " << list(b.center_of_mass, b.dim) << ",\n";
+  o << "  \"inertia\": [";
+  for (int i = 0; i < 3; ++i)
+    o << (i ? ", " : "") << list(b.inertia_tensor.row(i), 3);
+  o << "],\n";
+  o << "  \"n_modes\": " << b.n_modes() << ",\n";
+  o << "  \"frequencies_hz\": " << list(b.frequencies_hz, b.n_modes()) << ",\n";
+  o << "  \"mode_kinds\": [";
+  for (int k = 0; k < b.n_modes(); ++k)
+    o << (k ? ", " : "") << quoted(b.mode_kinds[k]);
+  o << "],\n";
+  o << "  \"n_nodes\": " << b.n_nodes() << ",\n";
+  o << "  \"n_skin_nodes\": " << b.skin_nodes.size() << ",\n";
+  o << "  \"n_skin_faces\": " << b.skin_faces.rows() << ",\n";
+  o << "  \"node_sets\": {";
+  bool first = true;
+  for (const auto& [name, ids] : b.node_sets)
+  {
+    o << (first ? "" : ", ") << quoted(name) << ": " << ids.size();
+    first = false;
+  }
+  o << "}\n}\n";
+  std::cout << o.str();
+}
+
+void print_text(const std::string& path, const ReducedBodyData& b)
+{
+  std::ostringstream o;
+  o << std::setprecision(6);
+  o << path << ": reduced floating-frame body, format v" << ReducedBodyData::format_version
+    << ", " << b.dim << "D " << b.model << (b.dim == 2 ? " (per metre of depth)" : "") << "\n";
+  o << "  material     E = " << b.youngs_modulus << " Pa, nu = " << b.poisson_ratio
+    << ", rho = " << b.density << " kg/m^3\n";
+  o << "  mesh         " << b.mesh_file << " (hash " << b.mesh_hash << "), degree "
+    << b.element_degree << ", " << b.n_nodes() << " nodes, " << b.skin_nodes.size()
+    << " skin nodes, " << b.skin_faces.rows() << " skin faces\n";
+  o << "  reference    " << (b.clamp_set.empty() ? "free-free" : "clamped at '" + b.clamp_set + "'")
+    << "\n  node sets   ";
+  for (const auto& [name, ids] : b.node_sets)
+    o << " " << name << " (" << ids.size() << ")";
+  o << "\n  mass         " << b.mass << (b.dim == 2 ? " kg/m" : " kg") << "\n";
+  o << "  centre       " << b.center_of_mass.transpose() << " m\n";
+  o << "  inertia      about the centre of mass, kg m^2" << (b.dim == 2 ? "/m" : "") << "\n";
+  for (int i = 0; i < 3; ++i)
+    o << "               " << b.inertia_tensor.row(i) << "\n";
+  o << "  modes        " << b.n_modes() << "\n";
+  for (int k = 0; k < b.n_modes(); ++k)
+    o << "    " << std::setw(3) << k + 1 << "  " << std::setw(12) << b.frequencies_hz[k]
+      << " Hz  " << b.mode_kinds[k] << "\n";
+  std::cout << o.str();
+}
+} // namespace
+
+int info_command(const Arguments& args)
+{
+  CommandLine cl("chipflex info BODY.h5 [--json]", "Summarise a reduced body file.");
+  cl.add_positional("BODY", "body file written by chipflex reduce");
+  cl.add_flag("--json", "print one JSON object instead of text");
+  if (!cl.parse(args))
+    return 0;
+  const std::string path = cl.get("BODY");
+  const ReducedBodyData body = read_reduced_body(path);
+  if (cl.flag("--json"))
+    print_json(body);
+  else
+    print_text(path, body);
+  return 0;
 }
 } // namespace chipflex::apps

@@ -1,10 +1,131 @@
+// `chipflex reduce MESH.msh -o BODY.h5`: the reduced floating-frame body of a gmsh mesh
+// (fem/reduce.h). Runs under `mpirun -np N` too; only rank 0 prints and writes.
+
+#include "apps/command_line.h"
 #include "apps/commands.h"
 #include "common/input_error.h"
+#include "common/reduced_body_file.h"
+#include "fem/reduce.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
 
 namespace chipflex::apps
 {
-int reduce_command(const Arguments&)
+namespace
 {
-  throw InputError("chipflex reduce", "not built yet");
+/// "pressure:skin,force:tip:0,-1" -> {"pressure:skin", "force:tip:0,-1"}: a new case starts
+/// at each item naming a load kind, the other items are force components.
+std::vector<std::string> split_load_cases(const std::vector<std::string>& options)
+{
+  std::vector<std::string> cases;
+  for (const auto& option : options)
+  {
+    std::stringstream items(option);
+    std::string item;
+    while (std::getline(items, item, ','))
+      if (item.rfind("pressure:", 0) == 0 || item.rfind("force:", 0) == 0 || cases.empty())
+        cases.push_back(item);
+      else
+        cases.back() += "," + item;
+  }
+  return cases;
+}
+
+/// PETSc reads its options (e.g. -log_view) from the command line it is initialised with.
+std::vector<std::string> petsc_arguments(const std::string& options)
+{
+  std::vector<std::string> arguments{"chipflex"};
+  std::stringstream items(options);
+  std::string item;
+  while (items >> item)
+    arguments.push_back(item);
+  return arguments;
+}
+} // namespace
+
+int reduce_command(const Arguments& args)
+{
+  CommandLine cl("chipflex reduce MESH.msh -o BODY.h5 [options]",
+                 "Reduce a gmsh mesh to a floating-frame body file (HDF5, format v1): consistent\n"
+                 "mass and stiffness (deal.II), elastic normal modes (SLEPc Krylov-Schur,\n"
+                 "shift-and-invert, MUMPS), optional static correction modes, a mass-orthonormal\n"
+                 "basis and the inertia invariants. Works under mpirun -np N.");
+  cl.add_positional("MESH", "gmsh mesh (.msh) with named physical groups");
+  cl.add_option("--output", "FILE", "body file to write (.h5)", "", true);
+  cl.add_alias("-o", "--output");
+  cl.add_option("--E", "PA", "Young's modulus", "1.2e7");
+  cl.add_option("--nu", "-", "Poisson's ratio, in (-1, 0.5)", "0.4");
+  cl.add_option("--rho", "KG/M3", "density", "1100");
+  cl.add_flag("--plane-strain", "2D: plane strain (default), per metre of depth");
+  cl.add_flag("--plane-stress", "2D: plane stress, per metre of depth");
+  cl.add_option("--clamp", "GROUP", "fix this boundary group (cantilever); default free-free");
+  cl.add_option("--modes", "N", "number of elastic normal modes", "10");
+  cl.add_repeated_option("--static-modes", "LIST",
+                         "static correction modes, e.g. pressure:skin,force:tip:0,-1");
+  cl.add_option("--degree", "P", "element degree, 1 or 2", "2");
+  cl.add_option("--export-matrices", "DIR", "write M.mtx, K.mtx, dof_nodes.csv (one process)");
+  cl.add_option("--vtu", "FILE", "mode shapes for ParaView (.vtu)");
+  cl.add_option("--petsc-options", "'OPTS'", "options for PETSc/SLEPc, e.g. '-log_view'");
+  if (!cl.parse(args))
+    return 0;
+
+  fem::ReductionSettings settings;
+  settings.mesh_file = cl.get("MESH");
+  settings.material.youngs_modulus = cl.get_double("--E");
+  settings.material.poisson_ratio = cl.get_double("--nu");
+  settings.material.density = cl.get_double("--rho");
+  if (cl.flag("--plane-strain") && cl.flag("--plane-stress"))
+    throw InputError("--plane-stress", "cannot be combined with --plane-strain");
+  settings.material.plane_stress = cl.flag("--plane-stress");
+  settings.material.check();
+  if (cl.has("--clamp"))
+    settings.clamp_group = cl.get("--clamp");
+  const long modes = cl.get_int("--modes");
+  settings.static_modes = split_load_cases(cl.get_all("--static-modes"));
+  if (modes < 1)
+    throw InputError("--modes", "must be at least 1, got " + std::to_string(modes));
+  settings.n_modes = modes;
+  const long degree = cl.get_int("--degree");
+  if (degree != 1 && degree != 2)
+    throw InputError("--degree", "must be 1 or 2, got " + std::to_string(degree));
+  settings.degree = degree;
+  if (cl.has("--export-matrices"))
+    settings.export_directory = cl.get("--export-matrices");
+  if (cl.has("--vtu"))
+    settings.vtu_file = cl.get("--vtu");
+  const std::string output = cl.get("--output");
+
+  auto arguments = petsc_arguments(cl.has("--petsc-options") ? cl.get("--petsc-options") : "");
+  std::vector<char*> argv;
+  for (auto& a : arguments)
+    argv.push_back(a.data());
+  int argc = argv.size();
+  char** argv_pointer = argv.data();
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv_pointer, 1);
+  const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+
+  fem::ReductionTimings timings;
+  const ReducedBodyData body = fem::reduce_body(settings, &timings);
+  if (root)
+  {
+    write_reduced_body(output, body);
+    std::cout << "wrote " << output << ": " << body.dim << "D, " << body.n_nodes() << " nodes, "
+              << timings.n_dofs << " DoFs, " << (body.clamp_set.empty() ? "free-free" : "clamped at '" + body.clamp_set + "'")
+              << ", mass " << body.mass << " kg" << (body.dim == 2 ? "/m" : "") << "\n";
+    for (int k = 0; k < body.n_modes(); ++k)
+      std::cout << "  mode " << std::setw(2) << k + 1 << "  " << std::setw(12)
+                << std::setprecision(6) << body.frequencies_hz[k] << " Hz  " << body.mode_kinds[k]
+                << "\n";
+    std::cout << std::setprecision(3) << "seconds: mesh " << timings.mesh_reading << ", setup "
+              << timings.setup << ", assembly " << timings.assembly << ", factorisation "
+              << timings.factorisation << ", eigen solve " << timings.eigen_solve
+              << ", static modes " << timings.static_modes << ", invariants "
+              << timings.post_processing << "\n";
+  }
+  return 0;
 }
 } // namespace chipflex::apps

@@ -41,11 +41,14 @@ struct WallSurface
   /// Vertex positions and velocities in world coordinates.
   std::vector<Vector> vertices;
   std::vector<Vector> velocities;
-  /// Vertex ids of each face; 2D: (a, b) with the fluid side on the left of a -> b
-  /// (outward normal (dy, -dx) of a body traversed counter-clockwise);
-  /// 3D: (a, b, c) with the outward normal (b - a) x (c - a).
+  /// Vertex ids of each face. The fluid lies on the side of the face normal:
+  /// 2D: (a, b) with normal (dy, -dx), (dx, dy) = b - a, i.e. the fluid is on the RIGHT
+  /// of a -> b (the outward normal of a body traversed counter-clockwise; a tank is
+  /// traversed clockwise); 3D: (a, b, c) with normal (b - a) x (c - a).
   std::vector<std::array<int, dim>> faces;
   /// A permeable barrier: bodies feel it, the fluid does not (coupling/ only).
   bool fluid_passes = false;
+  /// dummy_particles: layers behind the surface (0: enough to cover the kernel support).
+  int dummy_layers = 0;
 };
 } // namespace chipflex::sph

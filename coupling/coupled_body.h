@@ -1,0 +1,37 @@
+#pragma once
+// A body as the co-simulation loop sees it: a skin (mbs::SkinBody) the fluid loads,
+// and a way to advance over one fluid step with the skin forces held constant. Rigid
+// bodies, chains and reduced flexible bodies (mbs/) and SPH solids (sph/) each get one
+// small adapter implementing this, so the loop never branches on the body kind.
+
+#include "mbs/skin_body.h"
+
+#include <string>
+#include <vector>
+
+namespace chipflex::coupling
+{
+template <int dim>
+class CoupledBody
+{
+public:
+  using Vector = Eigen::Matrix<double, dim, 1>;
+  virtual ~CoupledBody() = default;
+
+  virtual std::string kind() const = 0;
+  virtual mbs::SkinBody<dim>& skin() = 0;
+  const mbs::SkinBody<dim>& skin() const { return const_cast<CoupledBody*>(this)->skin(); }
+
+  /// Advances the body from t to t + dt under the skin forces last set (and gravity);
+  /// the body chooses its own sub-steps or implicit step.
+  virtual void advance(double dt) = 0;
+
+  /// Linear momentum of the body plus the impulse its supports (clamp, ground) have
+  /// taken up since the start: changed only by external forces. Used by tests.
+  virtual Vector linear_momentum() const = 0;
+
+  /// The complete dynamic state for checkpoints; restore(state()) is exact.
+  virtual std::vector<double> state() const = 0;
+  virtual void restore(const std::vector<double>& state) = 0;
+};
+} // namespace chipflex::coupling

@@ -1,0 +1,50 @@
+#include "coupling/sph_solid_body.h"
+
+#include <stdexcept>
+
+namespace chipflex::coupling
+{
+SphSolidBody::SphSolidBody(const sph::SolidMaterial& material,
+                           const sph::SolidStripLayout& layout, double smoothing_factor,
+                           const Vector& gravity)
+  : solid_(material, layout.spacing, smoothing_factor * layout.spacing)
+{
+  skin_map_ = sph::build_solid_strip(solid_, layout);
+  solid_.set_gravity(gravity);
+}
+
+void SphSolidBody::combine(const std::vector<Vector>& particle_values,
+                           std::vector<Vector>& out) const
+{
+  out.assign(skin_map_.nodes.size(), Vector::Zero());
+  for (std::size_t k = 0; k < skin_map_.nodes.size(); ++k)
+    for (const auto& [p, w] : skin_map_.nodes[k])
+      out[k] += w * particle_values[p];
+}
+
+void SphSolidBody::skin_positions(std::vector<Vector>& x) const
+{
+  combine(solid_.positions(), x);
+}
+
+void SphSolidBody::skin_velocities(std::vector<Vector>& v) const
+{
+  combine(solid_.velocities(), v);
+}
+
+void SphSolidBody::set_skin_forces(const std::vector<Vector>& f)
+{
+  if (f.size() != skin_map_.nodes.size())
+    throw std::logic_error("SphSolidBody: one force per skin node expected");
+  std::vector<Vector> particle_forces(solid_.n_particles(), Vector::Zero());
+  for (std::size_t k = 0; k < f.size(); ++k)
+    for (const auto& [p, w] : skin_map_.nodes[k])
+      particle_forces[p] += w * f[k];
+  solid_.set_external_forces(particle_forces);
+}
+
+void SphSolidBody::advance(double dt)
+{
+  substeps_ += solid_.advance(dt);
+}
+} // namespace chipflex::coupling

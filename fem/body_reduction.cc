@@ -1,0 +1,106 @@
+// reduce_body(): the `chipflex reduce` pipeline, dispatched on the mesh dimension.
+
+#include "common/input_error.h"
+#include "fem/elastic_body.h"
+#include "fem/gmsh_reader.h"
+#include "fem/inertia_invariants.h"
+#include "fem/modal_reduction.h"
+#include "fem/reduce.h"
+
+#include <chrono>
+
+namespace chipflex::fem
+{
+namespace
+{
+using clock = std::chrono::steady_clock;
+double seconds_since(clock::time_point t0)
+{
+  return std::chrono::duration<double>(clock::now() - t0).count();
+}
+
+template <int dim>
+ReducedBodyData reduce(const GmshMeshData& mesh, const ReductionSettings& settings,
+                       ReductionTimings& timings)
+{
+  std::vector<LoadCase> cases;
+  for (const auto& text : settings.static_modes)
+  {
+    cases.push_back(LoadCase::parse(text, dim, "--static-modes"));
+    mesh.require_group(cases.back().group, "--static-modes " + text);
+  }
+  auto t0 = clock::now();
+  ElasticBody<dim> body(mesh, settings.material, settings.degree, settings.clamp_group,
+                        MPI_COMM_WORLD);
+  body.setup_system();
+  timings.setup = seconds_since(t0);
+  timings.n_dofs = body.dof_handler.n_dofs();
+  timings.n_cells = body.triangulation.n_active_cells();
+  t0 = clock::now();
+  body.assemble_system();
+  timings.assembly = seconds_since(t0);
+  if (!settings.export_directory.empty())
+    body.export_matrices(settings.export_directory);
+
+  ModalReduction<dim> reduction(body, settings.n_modes, cases);
+  reduction.run(timings);
+
+  t0 = clock::now();
+  ReducedBodyData data;
+  data.dim = dim;
+  data.youngs_modulus = settings.material.youngs_modulus;
+  data.poisson_ratio = settings.material.poisson_ratio;
+  data.density = settings.material.density;
+  data.model = settings.material.model_name(dim);
+  data.mesh_file = settings.mesh_file;
+  data.mesh_hash = file_hash(settings.mesh_file);
+  data.element_degree = settings.degree;
+  data.clamp_set = settings.clamp_group;
+  data.tool_version = "chipflex 0.1.0";
+
+  data.nodes.resize(body.n_nodes(), dim);
+  for (unsigned int i = 0; i < body.n_nodes(); ++i)
+    for (int d = 0; d < dim; ++d)
+      data.nodes(i, d) = body.node_coordinates[i][d];
+  data.skin_nodes = body.skin_nodes;
+  data.skin_faces.resize(body.skin_faces.size(), dim);
+  for (std::size_t f = 0; f < body.skin_faces.size(); ++f)
+    for (int d = 0; d < dim; ++d)
+      data.skin_faces(f, d) = body.skin_faces[f][d];
+  data.node_sets = body.node_sets;
+
+  data.psi = reduction.basis;
+  data.mode_kinds = reduction.kinds;
+  data.stiffness_matrix = reduction.reduced_stiffness;
+  data.frequencies_hz.resize(data.psi.cols());
+  for (int k = 0; k < data.psi.cols(); ++k)
+    data.frequencies_hz[k] = std::sqrt(std::max(0., data.stiffness_matrix(k, k))) / (2 * M_PI);
+  compute_inertia_invariants(body.scalar_mass_matrix, data);
+
+  if (!settings.vtu_file.empty())
+  {
+    std::vector<std::string> names;
+    for (int k = 0; k < data.psi.cols(); ++k)
+      names.push_back("mode_" + std::to_string(k + 1));
+    body.output_modes(settings.vtu_file, data.psi, names);
+  }
+  timings.post_processing = seconds_since(t0);
+  return data;
+}
+} // namespace
+
+ReducedBodyData reduce_body(const ReductionSettings& settings, ReductionTimings* timings)
+{
+  settings.material.check();
+  if (settings.degree != 1 && settings.degree != 2)
+    throw InputError("--degree", "must be 1 or 2");
+  ReductionTimings local;
+  ReductionTimings& t = timings ? *timings : local;
+  const auto t0 = clock::now();
+  const GmshMeshData mesh = read_gmsh_mesh(settings.mesh_file);
+  t.mesh_reading = seconds_since(t0);
+  if (mesh.dim == 2)
+    return reduce<2>(mesh, settings, t);
+  return reduce<3>(mesh, settings, t);
+}
+} // namespace chipflex::fem

@@ -1,0 +1,35 @@
+#pragma once
+// Reads a gmsh mesh file through the gmsh API (not deal.II's GridIn, which rejects one
+// surface in several physical groups and has no group names). The result is plain data;
+// ElasticBody builds the deal.II triangulation and the named node sets from it.
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace chipflex::fem
+{
+struct GmshMeshData
+{
+  std::string path;
+  int dim = 0;            ///< highest element dimension: 2 or 3
+  bool simplex = false;   ///< triangles/tetrahedra (true) or quads/hexahedra (false)
+  /// Vertices used by the body's cells, renumbered 0..n-1 (z = 0 in 2D).
+  std::vector<std::array<double, 3>> vertices;
+  /// Body cells: corner vertex ids in gmsh's order (higher-order gmsh nodes are dropped:
+  /// chipflex meshes are straight-sided, the FE degree is chosen by `reduce`).
+  std::vector<std::vector<unsigned int>> cells;
+  /// Physical groups of dimension dim-1: name -> faces, each as its corner vertex ids.
+  std::map<std::string, std::vector<std::vector<unsigned int>>> face_groups;
+  /// Physical groups of dimension dim: name -> cell indices.
+  std::map<std::string, std::vector<unsigned int>> cell_groups;
+
+  /// Throws InputError unless `name` is a physical group of dimension dim-1 or dim.
+  void require_group(const std::string& name, const std::string& why) const;
+};
+
+/// Throws InputError (naming the file) for a missing, malformed or truncated file, a
+/// mesh without 2D/3D cells, mixed cell kinds, or faces of a group not on the body.
+GmshMeshData read_gmsh_mesh(const std::string& path);
+} // namespace chipflex::fem

@@ -1,0 +1,253 @@
+#include "fem/modal_reduction.h"
+
+#include "common/input_error.h"
+#include "fem/direct_solver.h"
+#include "fem/eigen_solver.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace chipflex::fem
+{
+namespace
+{
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// sum_i A_ii / sum_i B_ii: a typical eigenvalue, used to scale shifts.
+double diagonal_ratio(const PETScWrappers::MPI::SparseMatrix& a,
+                      const PETScWrappers::MPI::SparseMatrix& b,
+                      const PETScWrappers::MPI::Vector& layout)
+{
+  auto da = layout, db = layout;
+  MatGetDiagonal(a, da);
+  MatGetDiagonal(b, db);
+  PetscScalar sa, sb;
+  VecSum(da, &sa);
+  VecSum(db, &sb);
+  return PetscRealPart(sa) / PetscRealPart(sb);
+}
+} // namespace
+
+template <int dim>
+ModalReduction<dim>::ModalReduction(const ElasticBody<dim>& body_, unsigned int n_modes_,
+                                    std::vector<LoadCase> static_cases_)
+  : body(body_), n_modes(n_modes_), static_cases(std::move(static_cases_))
+{
+  if (n_modes == 0 && static_cases.empty())
+    throw InputError("--modes", "must be at least 1 (or give --static-modes)");
+}
+
+template <int dim>
+Eigen::VectorXd ModalReduction<dim>::apply_mass(const Eigen::VectorXd& v) const
+{
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  const int n = body.n_nodes();
+  RowMajor result = body.scalar_mass_matrix * Eigen::Map<const RowMajor>(v.data(), n, dim);
+  return Eigen::Map<Eigen::VectorXd>(result.data(), v.size());
+}
+
+template <int dim>
+void ModalReduction<dim>::run(ReductionTimings& timings)
+{
+  if (!body.is_clamped())
+    compute_rigid_modes();
+  compute_normal_modes(timings);
+  const auto t0 = std::chrono::steady_clock::now();
+  compute_static_modes(timings);
+  timings.static_modes = seconds_since(t0);
+  orthonormalise_and_fix_signs();
+  compute_reduced_stiffness();
+}
+
+// Translations and rotations about the centre of mass, M-orthonormalised.
+template <int dim>
+void ModalReduction<dim>::compute_rigid_modes()
+{
+  const int n = body.n_nodes(), n_rigid = dim * (dim + 1) / 2;
+  Eigen::VectorXd centre = Eigen::VectorXd::Zero(dim), masses = body.scalar_mass_matrix *
+                                                              Eigen::VectorXd::Ones(n);
+  for (int i = 0; i < n; ++i)
+    for (int d = 0; d < dim; ++d)
+      centre[d] += masses[i] * body.node_coordinates[i][d] / masses.sum();
+  rigid = Eigen::MatrixXd::Zero(dim * n, n_rigid);
+  for (int i = 0; i < n; ++i)
+  {
+    double r[3] = {0, 0, 0};
+    for (int d = 0; d < dim; ++d)
+      r[d] = body.node_coordinates[i][d] - centre[d];
+    for (int d = 0; d < dim; ++d)
+      rigid(i * dim + d, d) = 1;
+    if (dim == 2)
+    {
+      rigid(i * dim + 0, 2) = -r[1];
+      rigid(i * dim + 1, 2) = r[0];
+    }
+    else // e_a x r for a = x, y, z
+      for (int a = 0; a < 3; ++a)
+      {
+        const int b = (a + 1) % 3, c = (a + 2) % 3;
+        rigid(i * dim + c, dim + a) = r[b];
+        rigid(i * dim + b, dim + a) = -r[c];
+      }
+  }
+  for (int k = 0; k < n_rigid; ++k)
+    for (int pass = 0; pass < 2; ++pass)
+    {
+      for (int l = 0; l < k; ++l)
+        rigid.col(k) -= rigid.col(l) * rigid.col(l).dot(apply_mass(rigid.col(k)));
+      rigid.col(k) /= std::sqrt(rigid.col(k).dot(apply_mass(rigid.col(k))));
+    }
+}
+
+template <int dim>
+void ModalReduction<dim>::compute_normal_modes(ReductionTimings& timings)
+{
+  normal.clear();
+  eigenvalues.clear();
+  if (n_modes == 0)
+    return;
+  const auto layout = body.new_vector();
+  const unsigned int n_rigid = rigid.cols();
+  // Clamped: K is positive definite, shift 0. Free-free: K is singular; a shift of
+  // -1e-8 times a typical eigenvalue keeps K - sigma M regular (condition ~1e8) while the
+  // rigid modes (lambda = 0) stay the nearest and are found and discarded.
+  const double target =
+    n_rigid ? -1e-8 * diagonal_ratio(body.stiffness_matrix, body.mass_matrix, layout) : 0.;
+  const unsigned int n_wanted = n_modes + n_rigid;
+  const auto n_free = body.dof_handler.n_dofs() - body.constraints.n_constraints();
+  if (n_wanted >= n_free)
+    throw InputError("--modes", "asks for " + std::to_string(n_modes) +
+                                  " modes; the mesh has only " + std::to_string(n_free) +
+                                  " free DoFs");
+  auto solution =
+    solve_eigenproblem(body.stiffness_matrix, body.mass_matrix, n_wanted, target, layout);
+  timings.factorisation = solution.factorisation_seconds;
+  timings.eigen_solve = solution.solve_seconds;
+
+  if (n_rigid)
+  {
+    const double first_elastic = solution.eigenvalues[n_rigid];
+    for (unsigned int k = 0; k < n_rigid; ++k)
+      if (std::abs(solution.eigenvalues[k]) > 1e-4 * first_elastic)
+        throw InputError(body.mesh.path,
+                         "the free body does not have exactly " + std::to_string(n_rigid) +
+                           " rigid-body modes (is it one connected piece?)");
+    if (solution.eigenvalues[n_rigid - 1] < -1e-4 * first_elastic)
+      throw std::logic_error("negative eigenvalue of an elastic body");
+  }
+  for (unsigned int k = n_rigid; k < n_wanted; ++k)
+  {
+    Eigen::VectorXd phi = body.to_nodal(solution.vectors[k]);
+    if (n_rigid) // exact M-orthogonality to rigid motion
+      phi -= rigid * (rigid.transpose() * apply_mass(phi));
+    normal.push_back(phi);
+    eigenvalues.push_back(solution.eigenvalues[k]);
+  }
+}
+
+template <int dim>
+void ModalReduction<dim>::compute_static_modes(ReductionTimings&)
+{
+  statics.clear();
+  if (static_cases.empty())
+    return;
+  const auto layout = body.new_vector();
+  // Free-free: solve (K + alpha M) u_{k+1} = f' + alpha M u_k, u made M-orthogonal to the
+  // rigid modes each time; the elastic error shrinks by alpha/(lambda_1 + alpha) per step.
+  double alpha = 0;
+  if (rigid.cols())
+    alpha = std::max(eigenvalues.empty() ? 0. : 1e-3 * eigenvalues.front(),
+                     1e-10 * diagonal_ratio(body.stiffness_matrix, body.mass_matrix, layout));
+  const DirectSolver solver(body.stiffness_matrix, alpha, body.mass_matrix);
+  for (const auto& load : static_cases)
+  {
+    Eigen::VectorXd f = body.to_nodal(body.load_vector(load));
+    if (f.norm() == 0)
+      throw InputError("--static-modes " + load.text, "the load vanishes");
+    auto rhs = layout, u_vec = layout;
+    Eigen::VectorXd u;
+    if (!rigid.cols())
+    {
+      body.from_nodal(f, rhs);
+      solver.solve(rhs, u_vec);
+      u = body.to_nodal(u_vec);
+    }
+    else
+    {
+      f -= apply_mass(rigid * (rigid.transpose() * f)); // self-equilibrated (inertia relief)
+      u = Eigen::VectorXd::Zero(f.size());
+      for (int iteration = 0; iteration < 50; ++iteration)
+      {
+        body.from_nodal(f + alpha * apply_mass(u), rhs);
+        solver.solve(rhs, u_vec);
+        Eigen::VectorXd next = body.to_nodal(u_vec);
+        next -= rigid * (rigid.transpose() * apply_mass(next));
+        const double change = (next - u).norm();
+        u = next;
+        if (change <= 1e-13 * u.norm())
+          break;
+      }
+    }
+    statics.push_back(u);
+  }
+}
+
+template <int dim>
+void ModalReduction<dim>::orthonormalise_and_fix_signs()
+{
+  std::vector<Eigen::VectorXd> columns;
+  kinds.clear();
+  auto add = [&](Eigen::VectorXd v, const std::string& kind) {
+    const double original = std::sqrt(v.dot(apply_mass(v)));
+    for (int pass = 0; pass < 2; ++pass)
+      for (const auto& c : columns)
+        v -= c * c.dot(apply_mass(v));
+    const double norm = std::sqrt(v.dot(apply_mass(v)));
+    if (!(norm > 1e-8 * original))
+      throw InputError("--static-modes " + kind.substr(7),
+                       "adds nothing to the modes before it (linearly dependent)");
+    v /= norm;
+    // Sign: the first (lowest row) entry within 1e-6 of the largest magnitude is positive;
+    // the tolerance keeps mirror-symmetric ties from flipping with round-off.
+    const double largest = v.cwiseAbs().maxCoeff();
+    for (Eigen::Index i = 0; i < v.size(); ++i)
+      if (std::abs(v[i]) >= (1 - 1e-6) * largest)
+      {
+        if (v[i] < 0)
+          v = -v;
+        break;
+      }
+    columns.push_back(v);
+    kinds.push_back(kind);
+  };
+  for (const auto& phi : normal)
+    add(phi, "normal");
+  for (std::size_t s = 0; s < statics.size(); ++s)
+    add(statics[s], "static:" + static_cases[s].text);
+  basis.resize(body.dof_of_node.size(), columns.size());
+  for (std::size_t k = 0; k < columns.size(); ++k)
+    basis.col(k) = columns[k];
+}
+
+template <int dim>
+void ModalReduction<dim>::compute_reduced_stiffness()
+{
+  const int m = basis.cols();
+  Eigen::MatrixXd k_basis(basis.rows(), m);
+  auto v = body.new_vector(), kv = body.new_vector();
+  for (int k = 0; k < m; ++k)
+  {
+    body.from_nodal(basis.col(k), v);
+    body.stiffness_matrix.vmult(kv, v);
+    k_basis.col(k) = body.to_nodal(kv);
+  }
+  reduced_stiffness = basis.transpose() * k_basis;
+  reduced_stiffness = 0.5 * (reduced_stiffness + reduced_stiffness.transpose()).eval();
+}
+
+template class ModalReduction<2>;
+template class ModalReduction<3>;
+} // namespace chipflex::fem

@@ -1,0 +1,51 @@
+#pragma once
+// From an assembled ElasticBody to a mass-orthonormal reduced basis:
+//   1. normal modes: K phi = omega^2 M phi (SLEPc). A free-free body's dim(dim+1)/2 rigid
+//      modes are computed too (a small negative shift keeps K - sigma M regular), checked to
+//      be ~0 and dropped; the elastic ones are made exactly M-orthogonal to the analytic
+//      rigid modes. Rigid motion belongs to the floating frame.
+//   2. static correction modes: K u = f for each load case; free-free bodies use inertia
+//      relief (f projected onto self-equilibrated loads, u made M-orthogonal to rigid
+//      motion), which is how a floating body responds quasi-statically.
+//   3. the basis [Phi S] made M-orthonormal (static columns Gram-Schmidt against the
+//      normal ones, twice). K_red is then diagonal on the normal block (Phi^T K s =
+//      Lambda Phi^T M s = 0) and dense only on the small static block.
+//   4. sign convention: in each column the first row (node*dim + component) whose magnitude
+//      is within 1e-6 of the largest is positive, so every run, serial or `mpirun -np N`,
+//      writes the same modes.
+
+#include "fem/elastic_body.h"
+#include "fem/reduce.h"
+
+namespace chipflex::fem
+{
+template <int dim>
+class ModalReduction
+{
+public:
+  ModalReduction(const ElasticBody<dim>& body, unsigned int n_modes,
+                 std::vector<LoadCase> static_cases);
+
+  void run(ReductionTimings& timings);
+
+  Eigen::MatrixXd basis;             ///< (dim n) x m, node-ordered, M-orthonormal
+  std::vector<std::string> kinds;    ///< "normal" / "static:<case>"
+  Eigen::MatrixXd reduced_stiffness; ///< basis^T K basis
+  std::vector<double> eigenvalues;   ///< of the normal modes, omega^2
+
+private:
+  void compute_rigid_modes();
+  void compute_normal_modes(ReductionTimings& timings);
+  void compute_static_modes(ReductionTimings& timings);
+  void orthonormalise_and_fix_signs();
+  void compute_reduced_stiffness();
+
+  Eigen::VectorXd apply_mass(const Eigen::VectorXd& v) const; ///< (Ms (x) I) v, nodal
+
+  const ElasticBody<dim>& body;
+  const unsigned int n_modes;
+  const std::vector<LoadCase> static_cases;
+  Eigen::MatrixXd rigid; ///< M-orthonormal rigid-body modes (free-free only)
+  std::vector<Eigen::VectorXd> normal, statics;
+};
+} // namespace chipflex::fem

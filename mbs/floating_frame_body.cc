@@ -1,0 +1,547 @@
+#include "mbs/floating_frame_body.h"
+
+#include "common/input_error.h"
+
+#include <algorithm>
+#include <cmath>
+
+// Derivation of the equations of motion (one derivation for 2D and 3D).
+//
+// Node velocity and acceleration with w_i = omega x u_i + Psi_i q' (body frame):
+//   x_i'  = R' + A w_i
+//   x_i'' = R'' + A (alpha x u_i + Psi_i q'' + omega x (omega x u_i) + 2 omega x Psi_i q')
+// Virtual displacements dx_i = dR + A (dtheta x u_i + Psi_i dq). The principle of virtual
+// work with the consistent mass matrix, sum_ij Ms_ij dx_i . x_j'' = sum_i dx_i . f_i,
+// gives M(q) [R''; alpha; q''] + h(v, q) = Q. With s = sum_ij Ms_ij u_j = m c + T q,
+// C_u_psik = C(u, psi_k) = C(x, psi_k) + sum_l q_l C(psi_l, psi_k),
+// C_uu = C(u, u) = C(x, x) + sum_k q_k (C(x, psi_k) + C(u, psi_k)^T) and the identities
+//   sum_ij Ms_ij a_i x b_j = axial(C(a, b)),  sum_ij Ms_ij a_i . b_j = tr C(a, b):
+//
+// mass matrix (symmetric):
+//   M_RR = m I          M_Rth = -A skew(s)  [2D: A perp(s)]          M_Rq = A T
+//   M_thth = J = tr(C_uu) I - C_uu  [2D: tr C_uu]    M_thq[:, k] = axial C_u_psik
+//   M_qq = M_red
+// quadratic velocity vector h (moved to the right-hand side with a minus sign):
+//   h_R  = A (omega x (omega x s) + 2 omega x T q')          [2D: A(-w^2 s + 2 w perp(T q'))]
+//   h_th = omega x J omega + 2 (tr(C_up) omega - C_up^T omega),  C_up = sum_k q'_k C_u_psik
+//                                                           [2D: 2 w tr C_up]
+//   h_q,k = omega^T C_u_psik omega - |omega|^2 tr C_u_psik + 2 omega . sum_l q'_l axial C(psi_l, psi_k)
+//                                                           [2D: -w^2 tr C_u_psik + 2 w (...)]
+// (sum Ms_ij u_i x (omega x (omega x u_j)) = -omega x (C_uu omega) = omega x J omega because
+// C_uu is symmetric; sum Ms_ij psi_k,i . (omega x psi_l,j) = omega . axial C(psi_l, psi_k).)
+// generalised forces of world nodal forces f_i, with X_f = sum_i xbar_i f_i^T and
+// G_k = sum_i psi_k,i f_i^T (precomputed when the forces are set):
+//   Q_R = sum_i f_i,  Q_th = sum_i u_i x A^T f_i = axial((X_f + sum_k q_k G_k) A),
+//   Q_q,k = sum_i psi_k,i . A^T f_i = tr(A G_k)
+// gravity g: Q_R = m g, Q_th = s x A^T g, Q_q = T^T A^T g.
+
+namespace chipflex::mbs
+{
+namespace
+{
+template <int dim>
+using Mat = Eigen::Matrix<double, dim, dim>;
+
+template <int dim>
+Eigen::Map<const Mat<dim>> as_matrix(const double* p)
+{
+  return Eigen::Map<const Mat<dim>>(p);
+}
+} // namespace
+
+template <int dim>
+FloatingFrameBody<dim>::FloatingFrameBody(const ReducedBodyData& data,
+                                          const FloatingFrameOptions& options)
+{
+  const std::string where = "reduced body (" + data.mesh_file + ")";
+  if (data.dim != dim)
+    throw InputError(where, "dimension " + std::to_string(data.dim) + ", expected " +
+                                std::to_string(dim));
+  const int n = data.n_nodes();
+  const int m_file = data.n_modes();
+  n_modes_ = options.n_modes < 0 ? m_file : std::min(options.n_modes, m_file);
+  const int m = n_modes_;
+  if (data.nodes.cols() != dim || data.psi.rows() != dim * n ||
+      data.translation_coupling.cols() < m || static_cast<int>(data.c_x_psi.size()) < m_file ||
+      static_cast<int>(data.c_psi_psi.size()) < m_file * m_file || data.mass_matrix.rows() < m ||
+      data.stiffness_matrix.rows() < m || data.c_xx.rows() != dim || data.mass <= 0)
+    throw InputError(where, "inconsistent shapes of nodes, modes or inertia invariants");
+
+  x_ref_ = data.nodes;
+  psi_ = data.psi.leftCols(m);
+  node_sets_ = data.node_sets;
+  skin_nodes_ = data.skin_nodes;
+  std::vector<int> skin_index(n, -1);
+  for (std::size_t s = 0; s < skin_nodes_.size(); ++s)
+  {
+    if (skin_nodes_[s] < 0 || skin_nodes_[s] >= n)
+      throw InputError(where, "skin node id out of range");
+    skin_index[skin_nodes_[s]] = static_cast<int>(s);
+  }
+  for (int f = 0; f < data.skin_faces.rows(); ++f)
+  {
+    std::array<int, dim> face;
+    for (int c = 0; c < dim; ++c)
+    {
+      const int id = data.skin_faces(f, c);
+      if (id < 0 || id >= n || skin_index[id] < 0)
+        throw InputError(where, "skin face " + std::to_string(f) + " uses a non-skin node");
+      face[c] = skin_index[id];
+    }
+    skin_faces_.push_back(face);
+  }
+  const int ns = static_cast<int>(skin_nodes_.size());
+  skin_ref_.resize(dim * ns);
+  skin_psi_.resize(dim * ns, m);
+  for (int s = 0; s < ns; ++s)
+  {
+    skin_ref_.segment<dim>(dim * s) = x_ref_.row(skin_nodes_[s]).transpose();
+    skin_psi_.middleRows(dim * s, dim) = psi_.middleRows(dim * skin_nodes_[s], dim);
+  }
+
+  mass_ = data.mass;
+  s0_ = data.mass * data.center_of_mass.head<dim>();
+  t_ = data.translation_coupling.leftCols(m);
+  c_xx_ = data.c_xx;
+  constexpr int d2 = dim * dim;
+  c_xpsi_.resize(d2, m);
+  c_pp_.resize(d2 * m, m);
+  gyro_.resize(rdim * m, m);
+  for (int k = 0; k < m; ++k)
+  {
+    c_xpsi_.col(k) = Eigen::Map<const Eigen::VectorXd>(data.c_x_psi[k].data(), d2);
+    for (int l = 0; l < m; ++l)
+    {
+      const Mat<dim> c = data.c_psi_psi[l * m_file + k]; // C(psi_l, psi_k)
+      c_pp_.block(d2 * k, l, d2, 1) = Eigen::Map<const Eigen::VectorXd>(c.data(), d2);
+      const Eigen::Matrix<double, rdim, 1> ax(axial(c));
+      for (int r = 0; r < rdim; ++r) // element-wise: GCC 12 warns on a vectorised 1..3 copy
+        gyro_(rdim * k + r, l) = ax(r);
+    }
+  }
+  m_red_ = data.mass_matrix.topLeftCorner(m, m);
+  k_red_ = data.stiffness_matrix.topLeftCorner(m, m);
+  switch (options.damping)
+  {
+  case DampingKind::none:
+    d_red_ = Eigen::MatrixXd::Zero(m, m);
+    break;
+  case DampingKind::rayleigh:
+    d_red_ = options.rayleigh_mass * m_red_ + options.rayleigh_stiffness * k_red_;
+    break;
+  case DampingKind::modal:
+    d_red_ = Eigen::MatrixXd::Zero(m, m);
+    for (int k = 0; k < m; ++k)
+      d_red_(k, k) = 2 * options.modal_damping_ratio * std::sqrt(k_red_(k, k) * m_red_(k, k));
+    break;
+  }
+
+  q_ = Eigen::VectorXd::Zero(m);
+  base_q_ = q_;
+  v_ = Eigen::VectorXd::Zero(dim + rdim + m);
+  node_force_gf_ = Eigen::MatrixXd::Zero(d2, m);
+  modal_force_ = Eigen::VectorXd::Zero(m);
+  c_upsi_.resize(d2 * m);
+  tmp_m_.resize(m);
+  tmp_rm_.resize(rdim * m);
+  tmp_dd_.resize(d2);
+  skin_u_.resize(dim * ns);
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::set_pose(const Vector& position, const Matrix& rotation)
+{
+  position_ = position;
+  if constexpr (dim == 2)
+    angle_ = std::atan2(rotation(1, 0), rotation(0, 0));
+  else
+    quaternion_ = Eigen::Quaterniond(rotation).normalized();
+  if constexpr (dim == 2)
+    rotation_ = rotation_matrix(angle_);
+  else
+    rotation_ = quaternion_.toRotationMatrix();
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::set_pose(const Vector& position, double angle)
+{
+  static_assert(dim == 2 || dim == 3);
+  if constexpr (dim == 2)
+  {
+    position_ = position;
+    angle_ = angle;
+    rotation_ = rotation_matrix(angle);
+  }
+  else
+    throw InputError("FloatingFrameBody<3>::set_pose", "an angle defines a 2D pose only");
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::set_frame_velocity(const Vector& velocity, const Omega& omega_body)
+{
+  if (clamped_)
+    return;
+  v_.template head<dim>() = velocity;
+  v_.template segment<rdim>(dim) = omega_body;
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::set_modal_state(const Eigen::VectorXd& q, const Eigen::VectorXd& q_dot)
+{
+  q_ = q;
+  v_.tail(n_modes_) = q_dot;
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::clamp_to_ground()
+{
+  if (clamped_)
+    return;
+  const Eigen::VectorXd qd = v_.tail(n_modes_);
+  v_ = qd;
+  clamped_ = true;
+}
+
+template <int dim>
+typename FloatingFrameBody<dim>::Vector FloatingFrameBody<dim>::frame_velocity() const
+{
+  return clamped_ ? Vector::Zero() : Vector(v_.template head<dim>());
+}
+
+template <int dim>
+typename FloatingFrameBody<dim>::Omega FloatingFrameBody<dim>::angular_velocity() const
+{
+  return clamped_ ? Omega::Zero() : Omega(v_.template segment<rdim>(dim));
+}
+
+template <int dim>
+typename FloatingFrameBody<dim>::Vector FloatingFrameBody<dim>::node_position(int node) const
+{
+  const Vector u = x_ref_.row(node).transpose() + psi_.middleRows(dim * node, dim) * q_;
+  return position_ + rotation_ * u;
+}
+
+template <int dim>
+typename FloatingFrameBody<dim>::Vector FloatingFrameBody<dim>::node_velocity(int node) const
+{
+  const Vector u = x_ref_.row(node).transpose() + psi_.middleRows(dim * node, dim) * q_;
+  Vector w = psi_.middleRows(dim * node, dim) * v_.tail(n_modes_);
+  if (clamped_)
+    return rotation_ * w;
+  if constexpr (dim == 2)
+    w += v_(2) * perp(u);
+  else
+    w += Eigen::Vector3d(v_.template segment<3>(3)).cross(u);
+  return frame_velocity() + rotation_ * w;
+}
+
+template <int dim>
+typename FloatingFrameBody<dim>::Vector FloatingFrameBody<dim>::node_displacement(int node) const
+{
+  return rotation_ * (psi_.middleRows(dim * node, dim) * q_);
+}
+
+template <int dim>
+const std::vector<int>& FloatingFrameBody<dim>::node_set(const std::string& name) const
+{
+  const auto it = node_sets_.find(name);
+  if (it == node_sets_.end())
+    throw InputError("node set '" + name + "'", "not in the reduced body");
+  return it->second;
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::set_node_forces(const std::vector<int>& nodes,
+                                             const std::vector<Vector>& forces)
+{
+  if (nodes.size() != forces.size())
+    throw InputError("FloatingFrameBody::set_node_forces", "one force per node expected");
+  node_force_sum_.setZero();
+  node_force_xf_.setZero();
+  node_force_gf_.setZero();
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    const int id = nodes[i];
+    const Vector& f = forces[i];
+    node_force_sum_ += f;
+    node_force_xf_ += x_ref_.row(id).transpose() * f.transpose();
+    // vec(G_k)[a + dim b] += psi_k,i[a] f[b]
+    for (int b = 0; b < dim; ++b)
+      for (int a = 0; a < dim; ++a)
+        node_force_gf_.row(a + dim * b) += f[b] * psi_.row(dim * id + a);
+  }
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::set_frame_load(const Vector& force, const Omega& moment)
+{
+  frame_force_ = force;
+  frame_moment_ = moment;
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::skin_positions(std::vector<Vector>& x) const
+{
+  skin_u_.noalias() = skin_psi_ * q_;
+  skin_u_ += skin_ref_;
+  x.resize(skin_nodes_.size());
+  for (std::size_t s = 0; s < x.size(); ++s)
+    x[s] = position_ + rotation_ * skin_u_.template segment<dim>(dim * s);
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::skin_velocities(std::vector<Vector>& v) const
+{
+  v.resize(skin_nodes_.size());
+  tmp_m_ = v_.tail(n_modes_);
+  Eigen::VectorXd& w = skin_u_; // reused: first the elastic velocities Psi q'
+  w.noalias() = skin_psi_ * tmp_m_;
+  if (clamped_)
+  {
+    for (std::size_t s = 0; s < v.size(); ++s)
+      v[s] = rotation_ * w.template segment<dim>(dim * s);
+    return;
+  }
+  for (std::size_t s = 0; s < v.size(); ++s)
+  {
+    const Vector u =
+      skin_ref_.template segment<dim>(dim * s) + skin_psi_.middleRows(dim * s, dim) * q_;
+    Vector ws = w.template segment<dim>(dim * s);
+    if constexpr (dim == 2)
+      ws += v_(2) * perp(u);
+    else
+      ws += Eigen::Vector3d(v_.template segment<3>(3)).cross(u);
+    v[s] = v_.template head<dim>() + rotation_ * ws;
+  }
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::set_skin_forces(const std::vector<Vector>& f)
+{
+  set_node_forces(skin_nodes_, f);
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::store_base()
+{
+  base_position_ = position_;
+  base_angle_ = angle_;
+  base_quaternion_ = quaternion_;
+  base_q_ = q_;
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::set_from_base(const Eigen::Ref<const Eigen::VectorXd>& increment)
+{
+  q_ = base_q_ + increment.tail(n_modes_);
+  if (clamped_)
+    return;
+  position_ = base_position_ + increment.template head<dim>();
+  if constexpr (dim == 2)
+  {
+    angle_ = base_angle_ + increment(2);
+    rotation_ = rotation_matrix(angle_);
+  }
+  else
+  {
+    quaternion_ = (base_quaternion_ * quaternion_exp(increment.template segment<3>(3))).normalized();
+    rotation_ = quaternion_.toRotationMatrix();
+  }
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::update_deformation_terms() const
+{
+  constexpr int d2 = dim * dim;
+  const int m = n_modes_;
+  s_ = s0_ + t_ * q_;
+  c_upsi_.noalias() = c_pp_ * q_;
+  c_upsi_ += Eigen::Map<const Eigen::VectorXd>(c_xpsi_.data(), d2 * m);
+  const Eigen::Map<const Eigen::MatrixXd> cu(c_upsi_.data(), d2, m);
+  Eigen::Matrix<double, d2, 1> a = c_xpsi_ * q_, b = cu * q_;
+  c_uu_ = c_xx_ + as_matrix<dim>(a.data()) + as_matrix<dim>(b.data()).transpose();
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::mass_matrix(Eigen::Ref<Eigen::MatrixXd> mm) const
+{
+  const int m = n_modes_;
+  if (clamped_)
+  {
+    mm = m_red_;
+    return;
+  }
+  update_deformation_terms();
+  constexpr int d2 = dim * dim;
+  constexpr int f = dim + rdim;
+  mm.setZero();
+  mm.template topLeftCorner<dim, dim>() = mass_ * Matrix::Identity();
+  if constexpr (dim == 2)
+  {
+    mm.template block<2, 1>(0, 2) = rotation_ * perp(s_);
+    mm(2, 2) = c_uu_.trace();
+  }
+  else
+  {
+    mm.template block<3, 3>(0, 3) = -rotation_ * skew(s_);
+    mm.template block<3, 3>(3, 3) = c_uu_.trace() * Matrix::Identity() - c_uu_;
+  }
+  mm.block(0, f, dim, m).noalias() = rotation_ * t_;
+  for (int k = 0; k < m; ++k)
+  {
+    const Eigen::Matrix<double, rdim, 1> ax(axial(Mat<dim>(as_matrix<dim>(c_upsi_.data() + d2 * k))));
+    for (int r = 0; r < rdim; ++r) // element-wise: GCC 12 warns on a vectorised 1..3 copy
+      mm(dim + r, f + k) = ax(r);
+  }
+  mm.bottomRightCorner(m, m) = m_red_;
+  mm.block(dim, 0, rdim, dim) = mm.block(0, dim, dim, rdim).transpose();
+  mm.block(f, 0, m, f) = mm.block(0, f, f, m).transpose();
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::forces(const Vector& gravity, Eigen::Ref<Eigen::VectorXd> out) const
+{
+  constexpr int d2 = dim * dim;
+  const int m = n_modes_;
+  const Matrix at = rotation_.transpose();
+  const Eigen::Map<const Eigen::Matrix<double, d2, 1>> vec_at(at.data());
+  const Vector g_body = at * gravity;
+  const auto qd = v_.tail(m);
+
+  auto fq = out.tail(m);
+  fq.noalias() = node_force_gf_.transpose() * vec_at;
+  fq.noalias() += t_.transpose() * g_body;
+  fq.noalias() -= k_red_ * q_;
+  fq.noalias() -= d_red_ * qd;
+  fq += modal_force_;
+  if (clamped_)
+    return;
+
+  update_deformation_terms();
+  const Eigen::Map<const Eigen::MatrixXd> cu(c_upsi_.data(), d2, m);
+  const Vector tqd = t_ * qd;
+  Eigen::Matrix<double, d2, 1> vec_cup = cu * qd;
+  const Matrix c_up = as_matrix<dim>(vec_cup.data());
+  Eigen::Matrix<double, d2, 1> vec_gq = node_force_gf_ * q_;
+  const Matrix load_moment = (node_force_xf_ + as_matrix<dim>(vec_gq.data())) * rotation_;
+  tmp_rm_.noalias() = gyro_ * qd; // block k: sum_l q'_l axial C(psi_l, psi_k)
+  const Eigen::Map<const Eigen::Matrix<double, rdim, Eigen::Dynamic>> gyro_q(tmp_rm_.data(), rdim,
+                                                                            m);
+  if constexpr (dim == 2)
+  {
+    const double w = v_(2);
+    out.template head<2>() = node_force_sum_ + mass_ * gravity + frame_force_ -
+                             rotation_ * (-w * w * s_ + 2 * w * perp(tqd));
+    out(2) = axial(load_moment) + cross(s_, g_body) + frame_moment_(0) - 2 * w * c_up.trace();
+    // -w^2 tr C_u_psik: rows 0 and 3 of the vec are the diagonal
+    fq += w * w * (cu.row(0) + cu.row(3)).transpose();
+    fq.noalias() -= 2 * w * gyro_q.transpose();
+  }
+  else
+  {
+    const Eigen::Vector3d w = v_.template segment<3>(3);
+    const Matrix j = c_uu_.trace() * Matrix::Identity() - c_uu_;
+    out.template head<3>() = node_force_sum_ + mass_ * gravity + frame_force_ -
+                             rotation_ * (w.cross(w.cross(s_)) + 2 * w.cross(tqd));
+    out.template segment<3>(3) = axial(load_moment) + s_.cross(g_body) + at * frame_moment_ -
+                                 w.cross(j * w) -
+                                 2 * (c_up.trace() * w - c_up.transpose() * w);
+    const Matrix ww = w * w.transpose() - w.squaredNorm() * Matrix::Identity();
+    const Eigen::Map<const Eigen::Matrix<double, d2, 1>> vec_ww(ww.data());
+    fq.noalias() -= cu.transpose() * vec_ww;
+    fq.noalias() -= 2 * gyro_q.transpose() * w;
+  }
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::add_tangent(double c_k, double c_d, Eigen::Ref<Eigen::MatrixXd> s) const
+{
+  const int m = n_modes_;
+  s.bottomRightCorner(m, m) += c_k * k_red_ + c_d * d_red_;
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::point_jacobian(const Vector& p, Eigen::Ref<PointJacobian> j) const
+{
+  j.setZero();
+  if (clamped_)
+    return;
+  j.template leftCols<dim>().setIdentity();
+  if constexpr (dim == 2)
+    j.col(2) = rotation_ * perp(p);
+  else
+    j.template middleCols<3>(3) = -rotation_ * skew(p);
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::save_state(std::vector<double>& out) const
+{
+  out.insert(out.end(), position_.data(), position_.data() + dim);
+  if constexpr (dim == 2)
+    out.push_back(angle_);
+  else
+    out.insert(out.end(), {quaternion_.w(), quaternion_.x(), quaternion_.y(), quaternion_.z()});
+  out.insert(out.end(), q_.data(), q_.data() + q_.size());
+  out.insert(out.end(), v_.data(), v_.data() + v_.size());
+}
+
+template <int dim>
+const double* FloatingFrameBody<dim>::restore_state(const double* in)
+{
+  position_ = Eigen::Map<const Vector>(in);
+  in += dim;
+  if constexpr (dim == 2)
+  {
+    angle_ = *in++;
+    rotation_ = rotation_matrix(angle_);
+  }
+  else
+  {
+    quaternion_ = Eigen::Quaterniond(in[0], in[1], in[2], in[3]);
+    in += 4;
+    rotation_ = quaternion_.toRotationMatrix();
+  }
+  q_ = Eigen::Map<const Eigen::VectorXd>(in, n_modes_);
+  in += n_modes_;
+  v_ = Eigen::Map<const Eigen::VectorXd>(in, v_.size());
+  return in + v_.size();
+}
+
+template <int dim>
+typename FloatingFrameBody<dim>::Vector FloatingFrameBody<dim>::linear_momentum() const
+{
+  Eigen::MatrixXd mm(v_.size(), v_.size());
+  mass_matrix(mm);
+  if (clamped_)
+    return Vector::Zero();
+  return (mm * v_).template head<dim>();
+}
+
+template <int dim>
+typename FloatingFrameBody<dim>::Omega FloatingFrameBody<dim>::angular_momentum() const
+{
+  // L = sum_ij Ms_ij x_i x x_j' = R x p + A (M v)_theta (the theta rows of M v are the
+  // angular momentum about the frame origin in body axes).
+  Eigen::MatrixXd mm(v_.size(), v_.size());
+  mass_matrix(mm);
+  if (clamped_)
+    return Omega::Zero();
+  const Eigen::VectorXd mv = mm * v_;
+  const Vector p = mv.template head<dim>();
+  if constexpr (dim == 2)
+    return Omega(cross(position_, p) + mv(2));
+  else
+    return position_.cross(p) + rotation_ * mv.template segment<3>(3);
+}
+
+template <int dim>
+double FloatingFrameBody<dim>::kinetic_energy() const
+{
+  Eigen::MatrixXd mm(v_.size(), v_.size());
+  mass_matrix(mm);
+  return 0.5 * v_.dot(mm * v_);
+}
+
+template class FloatingFrameBody<2>;
+template class FloatingFrameBody<3>;
+} // namespace chipflex::mbs

@@ -1,0 +1,34 @@
+#pragma once
+// Rigid bodies are floating-frame bodies with no modes: the same mass matrix, quadratic
+// velocity vector (omega x J omega), joints and integrator apply. Planar: (x, y, theta);
+// spatial: position and unit quaternion.
+
+#include "common/reduced_body_file.h"
+#include "mbs/floating_frame_body.h"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace chipflex::mbs
+{
+/// Body data of a rigid body with its skin (nodes in frame coordinates; faces as in
+/// SkinBody: 2D segments of a counter-clockwise outline, 3D outward triangles).
+/// inertia_about_com: 2D uses the zz entry (per metre of depth), 3D the full tensor.
+template <int dim>
+ReducedBodyData rigid_body_data(double mass, const Eigen::Matrix<double, dim, 1>& center_of_mass,
+                                const Eigen::Matrix3d& inertia_about_com,
+                                const std::vector<Eigen::Matrix<double, dim, 1>>& skin_nodes,
+                                const std::vector<std::array<int, dim>>& skin_faces);
+
+/// A planar rectangular link of the rigid-chain gate: frame origin at the middle of its
+/// top edge (the hinge), hanging along -y; width `thickness` in x; density per volume, so
+/// the mass is per metre of depth. Its skin is the rectangle outline.
+ReducedBodyData rectangular_link_data(double length, double thickness, double density);
+
+template <int dim>
+std::unique_ptr<FloatingFrameBody<dim>> make_rigid_body(const ReducedBodyData& data)
+{
+  return std::make_unique<FloatingFrameBody<dim>>(data);
+}
+} // namespace chipflex::mbs

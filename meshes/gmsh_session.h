@@ -1,0 +1,16 @@
+#pragma once
+// One gmsh library session per process. gmsh::initialize/finalize may run only once,
+// and gmsh prints to stdout by default; this keeps it quiet and turns its errors into
+// InputError. Used by the mesh generators (meshes/) and the mesh reader (fem/).
+
+#include <functional>
+#include <string>
+
+namespace chipflex::meshes
+{
+/// Initialises gmsh on first use (terminal output off); finalised at program exit.
+void ensure_gmsh();
+
+/// Runs `action` on a fresh gmsh model; any gmsh failure becomes InputError(where, message).
+void with_gmsh_model(const std::string& where, const std::function<void()>& action);
+} // namespace chipflex::meshes

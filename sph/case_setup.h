@@ -1,0 +1,71 @@
+#pragma once
+// A case as plain data (apps/case_file.cc fills it from a ParameterHandler file; tests
+// and the benchmark fill it directly) and the builder that turns it into a FluidSolver:
+// fluid blocks on a lattice, a tank of walls, extra walls, derived defaults.
+
+#include "sph/fluid_parameters.h"
+#include "sph/fluid_solver.h"
+#include "sph/wall_surface.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace chipflex::sph
+{
+template <int dim>
+struct FluidBlock
+{
+  Eigen::Matrix<double, dim, 1> min, max; ///< filled at min + (k + 1/2) dp
+};
+
+template <int dim>
+struct TankDescription
+{
+  bool enabled = true;
+  Eigen::Matrix<double, dim, 1> min, max; ///< inner faces of the walls, m
+  bool open_top = true;
+  WallModel model = WallModel::dummy_particles;
+  int layers = 0; ///< dummy layers (0: cover the kernel support)
+  LennardJonesParameters lennard_jones;
+};
+
+template <int dim>
+struct Probe
+{
+  std::string name;
+  Eigen::Matrix<double, dim, 1> position;
+};
+
+template <int dim>
+struct CaseDescription
+{
+  FluidParameters<dim> fluid;
+  /// c0 = coefficient * sqrt(|g| H) with H the highest fluid block, if c0 = 0.
+  double sound_coefficient = 20;
+  std::vector<FluidBlock<dim>> fluid_blocks;
+  TankDescription<dim> tank;
+  std::vector<WallSurface<dim>> walls;
+  /// Start with the hydrostatic density of each block (no initial pressure wave).
+  bool hydrostatic_start = true;
+  /// Domain box: if fluid.domain_min == domain_max, the bounding box of particles and
+  /// walls, widened by a quarter of its size (and 4h) on every side.
+  bool automatic_domain = true;
+  double end_time = 1;
+  double output_interval = 0.01;
+  std::vector<Probe<dim>> pressure_probes; ///< Pa, Shepard-interpolated
+  std::vector<Probe<dim>> height_probes;   ///< free-surface elevation on the vertical line
+};
+
+/// Derives the defaults (c0, domain) into `c.fluid`, then builds the solver.
+template <int dim>
+std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c);
+
+/// The walls of a box tank (segments / triangles, normals into the tank).
+template <int dim>
+WallSurface<dim> tank_walls(const TankDescription<dim>& tank);
+
+/// Index of the vertical axis (against gravity; the last axis without gravity).
+template <int dim>
+int vertical_axis(const Eigen::Matrix<double, dim, 1>& gravity);
+} // namespace chipflex::sph

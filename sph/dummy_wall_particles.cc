@@ -1,0 +1,127 @@
+#include "sph/dummy_wall_particles.h"
+
+#include "sph/wall_geometry.h"
+
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace chipflex::sph
+{
+template <int dim>
+std::vector<Eigen::Matrix<double, dim, 1>>
+generate_dummy_particles(const WallSurface<dim>& wall, double dp, int layers)
+{
+  using Vector = Eigen::Matrix<double, dim, 1>;
+  std::vector<Vector> points;
+  // Hash on a dp/2 lattice to drop near-duplicates where layers of faces overlap.
+  std::map<std::array<long, dim>, std::vector<std::size_t>> buckets;
+  auto key = [&](const Vector& x) {
+    std::array<long, dim> k;
+    for (int d = 0; d < dim; ++d)
+      k[d] = long(std::floor(x[d] / dp));
+    return k;
+  };
+  auto add = [&](const Vector& x) {
+    const auto k = key(x);
+    for (int i = 0; i < (dim == 2 ? 9 : 27); ++i)
+    {
+      auto n = k;
+      n[0] += i % 3 - 1;
+      n[1] += (i / 3) % 3 - 1;
+      if constexpr (dim == 3)
+        n[2] += i / 9 - 1;
+      auto it = buckets.find(n);
+      if (it != buckets.end())
+        for (auto j : it->second)
+          if ((points[j] - x).norm() < 0.5 * dp)
+            return;
+    }
+    buckets[k].push_back(points.size());
+    points.push_back(x);
+  };
+  for (std::size_t f = 0; f < wall.faces.size(); ++f)
+  {
+    const auto& face = wall.faces[f];
+    if constexpr (dim == 2)
+    {
+      const Vector a = wall.vertices[face[0]], b = wall.vertices[face[1]];
+      const int n = std::max(1, int(std::lround((b - a).norm() / dp)));
+      for (int l = 0; l < layers; ++l)
+        for (int s = 0; s < n; ++s)
+        {
+          const double t = (s + 0.5) / n;
+          add(point_on_face(wall, int(f), {1 - t, t}, -(l + 0.5) * dp));
+        }
+    }
+    else
+    {
+      const Vector a = wall.vertices[face[0]], b = wall.vertices[face[1]],
+                   c = wall.vertices[face[2]];
+      const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+      const int n = std::max(1, int(std::lround(longest / dp)));
+      for (int l = 0; l < layers; ++l)
+        for (int i = 0; i < n; ++i)
+          for (int j = 0; i + j < n; ++j)
+          {
+            const double u = (i + 1.0 / 3) / n, v = (j + 1.0 / 3) / n;
+            add(point_on_face(wall, int(f), {1 - u - v, u, v}, -(l + 0.5) * dp));
+          }
+    }
+  }
+  return points;
+}
+
+template <int dim>
+WallAttachment<dim> attach_to_wall(const WallSurface<dim>& wall, std::uint32_t wall_id,
+                                   const Eigen::Matrix<double, dim, 1>& x)
+{
+  WallAttachment<dim> best;
+  best.wall = wall_id;
+  double best_score = std::numeric_limits<double>::max();
+  for (std::size_t f = 0; f < wall.faces.size(); ++f)
+  {
+    const FaceProjection<dim> p = project_on_face(wall, int(f), x);
+    // Outside a face, add the distance of the weights from the face so that corner
+    // particles go to the face they are the closest extension of.
+    double outside = 0;
+    for (double w : p.weights)
+      outside += std::max(0.0, -w);
+    const double score = std::abs(p.distance) + 1e3 * outside * (p.inside ? 0 : 1) +
+                         (p.inside ? 0 : 1e-9);
+    if (score < best_score)
+    {
+      best_score = score;
+      best.face = std::uint32_t(f);
+      best.weights = p.weights;
+      best.offset = p.distance;
+    }
+  }
+  return best;
+}
+
+template <int dim>
+void attached_state(const WallSurface<dim>& wall, const WallAttachment<dim>& a,
+                    Eigen::Matrix<double, dim, 1>& x, Eigen::Matrix<double, dim, 1>& v)
+{
+  x = point_on_face(wall, int(a.face), a.weights, a.offset);
+  v.setZero();
+  const auto& face = wall.faces[a.face];
+  if (!wall.velocities.empty())
+    for (int k = 0; k < dim; ++k)
+      v += a.weights[k] * wall.velocities[face[k]];
+}
+
+template std::vector<Eigen::Matrix<double, 2, 1>> generate_dummy_particles(const WallSurface<2>&,
+                                                                         double, int);
+template std::vector<Eigen::Matrix<double, 3, 1>> generate_dummy_particles(const WallSurface<3>&,
+                                                                         double, int);
+template WallAttachment<2> attach_to_wall(const WallSurface<2>&, std::uint32_t,
+                                          const Eigen::Matrix<double, 2, 1>&);
+template WallAttachment<3> attach_to_wall(const WallSurface<3>&, std::uint32_t,
+                                          const Eigen::Matrix<double, 3, 1>&);
+template void attached_state(const WallSurface<2>&, const WallAttachment<2>&,
+                             Eigen::Matrix<double, 2, 1>&, Eigen::Matrix<double, 2, 1>&);
+template void attached_state(const WallSurface<3>&, const WallAttachment<3>&,
+                             Eigen::Matrix<double, 3, 1>&, Eigen::Matrix<double, 3, 1>&);
+} // namespace chipflex::sph

@@ -1,0 +1,67 @@
+#pragma once
+// Every physical and numerical choice of the weakly-compressible SPH fluid, as a plain
+// struct: apps/case_file.cc fills it from the case file (where each key is documented
+// with its unit and default), tests and benchmarks fill it directly.
+
+#include <Eigen/Core>
+
+namespace chipflex::sph
+{
+enum class ViscosityModel
+{
+  artificial, ///< Monaghan (1992) artificial viscosity, coefficient alpha
+  laminar     ///< Lo & Shao (2002) laminar viscosity, kinematic viscosity nu
+};
+
+enum class DensityDiffusionModel
+{
+  none,
+  molteni_colagrossi, ///< Molteni & Colagrossi (2009) delta-SPH term
+  fourtakas           ///< Fourtakas et al. (2019): the same term on the dynamic density
+};
+
+enum class TimeScheme
+{
+  verlet,    ///< Verlet with an Euler step every `verlet_euler_every` steps (DualSPHysics)
+  symplectic ///< Monaghan's symplectic position-Verlet predictor-corrector
+};
+
+template <int dim>
+struct FluidParameters
+{
+  using Vector = Eigen::Matrix<double, dim, 1>;
+
+  double particle_spacing = 0.01; ///< dp, m
+  /// Smoothing length h = coefficient * sqrt(dim) * dp (DualSPHysics' coefh: 1 gives
+  /// h = 0.014142 m for dp = 0.01 m in 2D). The kernel support is 2h.
+  double smoothing_coefficient = 1.0;
+  double reference_density = 1000; ///< rho0, kg/m^3
+  double speed_of_sound = 0;       ///< c0, m/s (0: derived by the case builder)
+  double gamma = 7;                ///< Tait exponent
+  Vector gravity = Vector::Zero(); ///< m/s^2
+  ViscosityModel viscosity = ViscosityModel::artificial;
+  double artificial_viscosity = 0.02; ///< alpha (-)
+  double kinematic_viscosity = 1e-6;  ///< nu, m^2/s (laminar model)
+  DensityDiffusionModel density_diffusion = DensityDiffusionModel::fourtakas;
+  double density_diffusion_delta = 0.1; ///< delta (-)
+  TimeScheme scheme = TimeScheme::verlet;
+  int verlet_euler_every = 40;
+  double cfl = 0.2;
+  /// A time step below this stops the run (a collapsing step means a blow-up), s.
+  double minimum_time_step = 1e-9;
+  /// Particles must stay inside this box (m); leaving it stops the run.
+  Vector domain_min = Vector::Constant(-1), domain_max = Vector::Constant(1);
+
+  double smoothing_length() const
+  {
+    return smoothing_coefficient * std::sqrt(double(dim)) * particle_spacing;
+  }
+  double particle_mass() const
+  {
+    double m = reference_density;
+    for (int d = 0; d < dim; ++d)
+      m *= particle_spacing;
+    return m;
+  }
+};
+} // namespace chipflex::sph

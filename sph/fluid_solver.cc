@@ -1,0 +1,359 @@
+// FluidSolver: set-up, the step sequence, time integration and walls. The force pass
+// itself is in fluid_solver_forces.cc, checkpoints in fluid_solver_checkpoint.cc.
+
+#include "sph/fluid_solver.h"
+
+#include "common/input_error.h"
+#include "sph/dummy_wall_particles.h"
+#include "sph/fluid_solver_impl.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace chipflex::sph
+{
+template <int dim>
+FluidSolver<dim>::FluidSolver(const FluidParameters<dim>& parameters)
+  : parameters_(parameters), mass_(parameters.particle_mass()), h_(parameters.smoothing_length()),
+    impl_(std::make_unique<Impl>())
+{
+  const auto& p = parameters_;
+  if (!(p.particle_spacing > 0) || !(p.reference_density > 0) || !(p.speed_of_sound > 0) ||
+      !(p.smoothing_coefficient > 0) || !(p.cfl > 0) || !(p.gamma >= 1))
+    throw InputError("fluid", "particle spacing, density, speed of sound, smoothing "
+                              "coefficient, CFL must be positive and gamma >= 1");
+  if (p.verlet_euler_every < 1)
+    throw InputError("time/verlet euler every", "must be at least 1");
+}
+
+template <int dim>
+FluidSolver<dim>::~FluidSolver() = default;
+
+template <int dim>
+void FluidSolver<dim>::add_fluid_particles(const std::vector<Vector>& x,
+                                           const std::vector<double>& rho,
+                                           const std::vector<Vector>& v)
+{
+  if (set_up_)
+    throw std::logic_error("FluidSolver: particles can only be added before the first step");
+  for (std::size_t i = 0; i < x.size(); ++i)
+  {
+    staged_fluid_x_.push_back(x[i]);
+    staged_fluid_rho_.push_back(rho.empty() ? parameters_.reference_density : rho.at(i));
+    staged_fluid_v_.push_back(v.empty() ? Vector::Zero() : v.at(i));
+  }
+}
+
+template <int dim>
+int FluidSolver<dim>::add_wall(const WallSurface<dim>& wall,
+                               const std::vector<Vector>& dummy_positions)
+{
+  if (set_up_)
+    throw std::logic_error("FluidSolver: walls can only be added before the first step");
+  WallSurface<dim> w = wall;
+  if (w.velocities.empty())
+    w.velocities.assign(w.vertices.size(), Vector::Zero());
+  if (w.velocities.size() != w.vertices.size())
+    throw InputError("wall " + w.name, "needs one velocity per vertex");
+  for (const auto& f : w.faces)
+    for (int k = 0; k < dim; ++k)
+      if (f[k] < 0 || std::size_t(f[k]) >= w.vertices.size())
+        throw InputError("wall " + w.name, "a face refers to a missing vertex");
+  const std::uint32_t id = std::uint32_t(walls_.size());
+  const double dp = parameters_.particle_spacing;
+  if (w.model == WallModel::lennard_jones)
+    w.lennard_jones = derive_lennard_jones(
+      w.lennard_jones, dp, parameters_.reference_density,
+      parameters_.reference_density * std::pow(0.1 * parameters_.speed_of_sound, 2), w.name);
+  else if (!w.fluid_passes)
+  {
+    const int layers = w.dummy_layers > 0 ? w.dummy_layers : int(std::ceil(2 * h_ / dp));
+    const auto points =
+      dummy_positions.empty() ? generate_dummy_particles(w, dp, layers) : dummy_positions;
+    for (const auto& x : points)
+    {
+      staged_boundary_x_.push_back(x);
+      impl_->attachments.push_back(attach_to_wall(w, id, x));
+    }
+  }
+  walls_.push_back(std::move(w));
+  vertex_forces_.emplace_back(walls_.back().vertices.size(), Vector::Zero());
+  return int(id);
+}
+
+template <int dim>
+void FluidSolver<dim>::add_hook(HookPoint point, Hook hook)
+{
+  hooks_.emplace_back(point, std::move(hook));
+}
+
+template <int dim>
+void FluidSolver<dim>::run_hooks(HookPoint point)
+{
+  for (auto& [p, hook] : hooks_)
+    if (p == point)
+      hook(*this);
+}
+
+template <int dim>
+void FluidSolver<dim>::finish_setup()
+{
+  if (set_up_)
+    return;
+  set_up_ = true;
+  auto& p = particles_;
+  const std::size_t nb = staged_boundary_x_.size(), nf = staged_fluid_x_.size();
+  p.n_boundary = nb;
+  p.resize(nb + nf, parameters_.scheme == TimeScheme::symplectic);
+  const float rho0 = float(parameters_.reference_density);
+  for (std::size_t i = 0; i < nb + nf; ++i)
+  {
+    const bool fluid = i >= nb;
+    const Vector& x = fluid ? staged_fluid_x_[i - nb] : staged_boundary_x_[i];
+    const Vector v = fluid ? staged_fluid_v_[i - nb] : Vector::Zero();
+    const float rho = fluid ? float(staged_fluid_rho_[i - nb]) : rho0;
+    for (int d = 0; d < dim; ++d)
+    {
+      p.position[d][i] = x[d];
+      if (!p.position_previous[d].empty())
+        p.position_previous[d][i] = x[d];
+      p.velocity[d][i] = p.velocity_previous[d][i] = float(v[d]);
+    }
+    p.density[i] = p.density_previous[i] = rho;
+    p.id[i] = std::uint32_t(fluid ? i - nb : i);
+  }
+  for (std::size_t i = 0; i < nb; ++i)
+  {
+    const auto& a = impl_->attachments[i];
+    if (a.wall != WallAttachment<dim>::no_wall)
+    {
+      Vector x, v;
+      attached_state(walls_[a.wall], a, x, v);
+      for (int d = 0; d < dim; ++d)
+        p.velocity[d][i] = p.velocity_previous[d][i] = float(v[d]);
+    }
+  }
+  staged_fluid_x_ = {};
+  staged_fluid_v_ = {};
+  staged_boundary_x_ = {};
+  staged_fluid_rho_ = {};
+  impl_->setup(parameters_);
+}
+
+template <int dim>
+void FluidSolver<dim>::move_wall(int id, const std::vector<Vector>& vertices,
+                                 const std::vector<Vector>& velocities)
+{
+  auto& w = walls_.at(id);
+  if (vertices.size() != w.vertices.size() || velocities.size() != w.vertices.size())
+    throw std::invalid_argument("FluidSolver::move_wall: wall '" + w.name + "' has " +
+                                std::to_string(w.vertices.size()) + " vertices");
+  w.vertices = vertices;
+  w.velocities = velocities;
+  walls_moved_ = true;
+  if (w.model != WallModel::dummy_particles || !set_up_)
+    return;
+  auto& p = particles_;
+  for (std::size_t i = 0; i < p.n_boundary; ++i)
+  {
+    const auto& a = impl_->attachments[p.id[i]];
+    if (a.wall != std::uint32_t(id))
+      continue;
+    Vector x, v;
+    attached_state(w, a, x, v);
+    for (int d = 0; d < dim; ++d)
+    {
+      p.position[d][i] = x[d];
+      p.velocity[d][i] = float(v[d]);
+    }
+  }
+  boundary_moved_ = true;
+}
+
+template <int dim>
+typename FluidSolver<dim>::Vector FluidSolver<dim>::position(std::size_t i) const
+{
+  Vector x;
+  for (int d = 0; d < dim; ++d)
+    x[d] = particles_.position[d][i];
+  return x;
+}
+
+template <int dim>
+typename FluidSolver<dim>::Vector FluidSolver<dim>::velocity(std::size_t i) const
+{
+  Vector v;
+  for (int d = 0; d < dim; ++d)
+    v[d] = particles_.velocity[d][i];
+  return v;
+}
+
+template <int dim>
+double FluidSolver<dim>::pressure(std::size_t i) const
+{
+  return impl_->eos.pressure(double(particles_.density[i]));
+}
+
+template <int dim>
+void FluidSolver<dim>::fail(std::size_t i, const std::string& problem) const
+{
+  std::ostringstream s;
+  s.precision(6);
+  s << "step " << step_ << ", t = " << time_ << " s: "
+    << (kind(i) == ParticleKind::fluid ? "fluid" : "boundary") << " particle "
+    << particles_.id[i] << " at (";
+  for (int d = 0; d < dim; ++d)
+    s << (d ? ", " : "") << particles_.position[d][i];
+  s << ") " << problem;
+  throw SimulationError(s.str());
+}
+
+template <int dim>
+double FluidSolver<dim>::compute_time_step() const
+{
+  const auto& p = parameters_;
+  const double dt_force = acceleration_max_ > 0 ? std::sqrt(h_ / acceleration_max_) : 1e30;
+  const double dt_cv = h_ / (p.speed_of_sound + h_ * std::max(0.0, double(dot_rr2_max_)));
+  double dt = p.cfl * std::min(dt_force, dt_cv);
+  if (p.viscosity == ViscosityModel::laminar && p.kinematic_viscosity > 0)
+    dt = std::min(dt, 0.125 * h_ * h_ / p.kinematic_viscosity);
+  return dt;
+}
+
+template <int dim>
+void FluidSolver<dim>::check_time_step(double dt) const
+{
+  if (!(dt >= parameters_.minimum_time_step))
+  {
+    std::ostringstream s;
+    s << "the time step collapsed to " << dt << " s (minimum " << parameters_.minimum_time_step
+      << " s; largest acceleration " << acceleration_max_ << " m/s^2)";
+    fail(fastest_particle_, s.str());
+  }
+}
+
+template <int dim>
+double FluidSolver<dim>::step()
+{
+  finish_setup();
+  run_hooks(HookPoint::before_forces);
+  force_pass();
+  const double dt = compute_time_step();
+  check_time_step(dt);
+  dt_ = dt;
+  run_hooks(HookPoint::after_forces);
+  if (parameters_.scheme == TimeScheme::verlet)
+    update_verlet(dt);
+  else
+  {
+    predict_symplectic(dt);
+    force_pass();
+    correct_symplectic(dt);
+  }
+  time_ += dt;
+  ++step_;
+  run_hooks(HookPoint::after_step);
+  return dt;
+}
+
+template <int dim>
+void FluidSolver<dim>::update_verlet(double dt)
+{
+  auto& p = particles_;
+  const std::size_t nb = p.n_boundary, n = p.size();
+  const bool euler = ++verlet_counter_ >= parameters_.verlet_euler_every;
+  if (euler)
+    verlet_counter_ = 0;
+  // Leapfrog over two steps from the previous state; every few steps an Euler step
+  // from the current state decouples the odd and even step sequences (DualSPHysics).
+  const float dtv = float(euler ? dt : 2 * dt);
+  const float rho0 = float(parameters_.reference_density);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const float base_rho = euler ? p.density[i] : p.density_previous[i];
+    float rho = base_rho + dtv * p.density_rate[i];
+    p.density_previous[i] = p.density[i];
+    if (i < nb)
+    {
+      p.density[i] = std::max(rho, rho0); // DBC: a wall never pulls the fluid
+      continue;
+    }
+    p.density[i] = rho;
+    for (int d = 0; d < dim; ++d)
+    {
+      const float v = p.velocity[d][i], a = p.acceleration[d][i];
+      p.position[d][i] += dt * double(v) + 0.5 * dt * dt * double(a);
+      const float base_v = euler ? v : p.velocity_previous[d][i];
+      p.velocity_previous[d][i] = v;
+      p.velocity[d][i] = base_v + dtv * a;
+    }
+  }
+}
+
+template <int dim>
+void FluidSolver<dim>::predict_symplectic(double dt)
+{
+  auto& p = particles_;
+  const std::size_t nb = p.n_boundary, n = p.size();
+  const float half = float(0.5 * dt), rho0 = float(parameters_.reference_density);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    p.density_previous[i] = p.density[i];
+    const float rho = p.density[i] + half * p.density_rate[i];
+    for (int d = 0; d < dim; ++d)
+    {
+      p.position_previous[d][i] = p.position[d][i];
+      p.velocity_previous[d][i] = p.velocity[d][i];
+    }
+    if (i < nb)
+    {
+      p.density[i] = std::max(rho, rho0);
+      continue;
+    }
+    p.density[i] = rho;
+    for (int d = 0; d < dim; ++d)
+    {
+      p.position[d][i] += 0.5 * dt * double(p.velocity[d][i]);
+      p.velocity[d][i] += half * p.acceleration[d][i];
+    }
+  }
+}
+
+template <int dim>
+void FluidSolver<dim>::correct_symplectic(double dt)
+{
+  auto& p = particles_;
+  const std::size_t nb = p.n_boundary, n = p.size();
+  const float rho0 = float(parameters_.reference_density);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double eps = -double(p.density_rate[i]) / double(p.density[i]) * dt;
+    const float rho = float(double(p.density_previous[i]) * (2 - eps) / (2 + eps));
+    if (i < nb)
+    {
+      p.density[i] = std::max(rho, rho0);
+      continue;
+    }
+    p.density[i] = rho;
+    for (int d = 0; d < dim; ++d)
+    {
+      const float v = p.velocity_previous[d][i] + float(dt) * p.acceleration[d][i];
+      p.velocity[d][i] = v;
+      p.position[d][i] =
+        p.position_previous[d][i] + 0.5 * dt * (double(p.velocity_previous[d][i]) + double(v));
+    }
+  }
+}
+
+template <int dim>
+std::size_t FluidSolver<dim>::memory_bytes() const
+{
+  return particles_.memory_bytes() + impl_->memory_bytes();
+}
+
+template class FluidSolver<2>;
+template class FluidSolver<3>;
+} // namespace chipflex::sph

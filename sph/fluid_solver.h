@@ -1,0 +1,168 @@
+#pragma once
+// FluidSolver<dim>: the weakly-compressible SPH fluid (2D per metre depth, or 3D).
+//
+// Life cycle
+//   FluidSolver<2> fluid(parameters);             // FluidParameters: every option
+//   fluid.add_fluid_particles(x, rho);            // set-up, any order
+//   int id = fluid.add_wall(surface);             // WallSurface: LJ or dummy particles
+//   fluid.add_hook(HookPoint::before_forces, f);  // optional per-step callbacks
+//   while (fluid.time() < t_end) fluid.step();    // one adaptive time step
+//
+// Walls (the interface coupling/ uses; all vectors in world coordinates, SI):
+//   add_wall(surface [, dummy positions])  returns the wall id. Lennard-Jones walls act
+//       through their faces; dummy-particle walls get layers of boundary particles
+//       (generated behind the faces, or the given positions), attached to the faces.
+//   move_wall(id, vertices, velocities)    new vertex positions and velocities (call it
+//       in a before_forces hook, i.e. for the state at time(), before the step).
+//   wall_vertex_forces(id)                 after each step: the force of the fluid ON
+//       every vertex (N; 2D: N per metre depth) from the force pass that determined
+//       the step's velocity update (Verlet: the pass at the step start; symplectic:
+//       the corrector pass at mid-step). Each particle-face contribution is split
+//       with the barycentric weights of its foot point (LJ) or attachment (dummy), so
+//       the sum over vertices is exactly minus what the fluid received: with the
+//       symplectic scheme, sum(m v) changes by -dt * sum(vertex forces) (+ gravity).
+//
+// Step (one time step dt):
+//   hooks(before_forces) -> sort by cell -> force pass (fluid, boundary, LJ walls,
+//   gravity) -> dt = compute_time_step() -> hooks(after_forces) -> update -> t += dt ->
+//   hooks(after_step). Symplectic adds a predictor half step and a second force pass.
+// Time step: dt = min(CFL min(sqrt(h/|a|max), h/(c0 + h max(v.r/(r^2+eta2)))),
+//   0.125 h^2/nu (laminar)).
+//
+// Determinism: every particle gathers its own sums in cell order; sorting is a stable,
+// sequential counting sort; reductions are maxima. Results are bitwise independent of
+// the thread count, and a checkpoint restores a run bitwise.
+//
+// Failure: a non-finite state, a particle leaving the domain box or dt below
+// minimum_time_step throws SimulationError naming the step, time and particle.
+
+#include "sph/fluid_parameters.h"
+#include "sph/particle_arrays.h"
+#include "sph/wall_surface.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace chipflex
+{
+class Hdf5File;
+}
+
+namespace chipflex::sph
+{
+enum class ParticleKind
+{
+  boundary = 0,
+  fluid = 1
+};
+
+enum class HookPoint
+{
+  before_forces, ///< state at time(); move walls here
+  after_forces,  ///< forces and dt known (last_time_step()), state not yet advanced
+  after_step     ///< state at the new time()
+};
+
+template <int dim>
+class FluidSolver
+{
+public:
+  using Vector = Eigen::Matrix<double, dim, 1>;
+  using Hook = std::function<void(FluidSolver&)>;
+
+  explicit FluidSolver(const FluidParameters<dim>& parameters);
+  ~FluidSolver();
+  FluidSolver(const FluidSolver&) = delete;
+  FluidSolver& operator=(const FluidSolver&) = delete;
+
+  // --- set-up (before the first step) -------------------------------------------------
+  /// Fluid particles; densities empty: reference density; velocities empty: at rest.
+  void add_fluid_particles(const std::vector<Vector>& positions,
+                           const std::vector<double>& densities = {},
+                           const std::vector<Vector>& velocities = {});
+  /// Adds a wall; returns its id. `dummy_positions` (dummy model only): use these
+  /// boundary particles (attached to the nearest faces) instead of generated layers.
+  int add_wall(const WallSurface<dim>& wall, const std::vector<Vector>& dummy_positions = {});
+  void add_hook(HookPoint point, Hook hook);
+
+  // --- stepping ---------------------------------------------------------------------------
+  /// Advances one time step; returns dt.
+  double step();
+  double time() const { return time_; }
+  std::int64_t step_count() const { return step_; }
+  /// dt of the last (or current, from an after_forces hook) step.
+  double last_time_step() const { return dt_; }
+  /// dt from the forces of the last force pass (the rule above).
+  double compute_time_step() const;
+
+  // --- walls ------------------------------------------------------------------------------
+  int n_walls() const { return int(walls_.size()); }
+  const WallSurface<dim>& wall(int id) const { return walls_.at(id); }
+  void move_wall(int id, const std::vector<Vector>& vertices,
+                 const std::vector<Vector>& velocities);
+  const std::vector<Vector>& wall_vertex_forces(int id) const { return vertex_forces_.at(id); }
+
+  // --- particles (boundary block first: [0, n_boundary()), fluid after) ------------------
+  std::size_t n_particles() const { return particles_.size(); }
+  std::size_t n_boundary() const { return particles_.n_boundary; }
+  std::size_t n_fluid() const { return particles_.n_fluid(); }
+  const ParticleArrays<dim>& particles() const { return particles_; }
+  /// Mutable access for hooks (e.g. an external body force added to the accelerations
+  /// in an after_forces hook). Do not reorder or resize.
+  ParticleArrays<dim>& particles() { return particles_; }
+  ParticleKind kind(std::size_t i) const
+  {
+    return i < particles_.n_boundary ? ParticleKind::boundary : ParticleKind::fluid;
+  }
+  Vector position(std::size_t i) const;
+  Vector velocity(std::size_t i) const;
+  double pressure(std::size_t i) const;
+  /// Every particle (fluid and boundary) has the mass rho0 dp^dim (2D: per metre).
+  double particle_mass() const { return mass_; }
+  double speed_of_sound() const { return parameters_.speed_of_sound; }
+  const FluidParameters<dim>& parameters() const { return parameters_; }
+
+  // --- restart and memory -------------------------------------------------------------
+  /// Writes the complete state under `group` (particles bitwise, walls, time, step).
+  void save(Hdf5File& file, const std::string& group) const;
+  /// Restores a state saved by save() for the same set-up (same walls, same counts).
+  void load(const Hdf5File& file, const std::string& group);
+  /// Bytes held by particle and neighbour-list arrays.
+  std::size_t memory_bytes() const;
+
+private:
+  void finish_setup();
+  void sort_and_bin();
+  void force_pass();
+  void update_verlet(double dt);
+  void predict_symplectic(double dt);
+  void correct_symplectic(double dt);
+  void check_time_step(double dt) const;
+  void run_hooks(HookPoint point);
+  [[noreturn]] void fail(std::size_t i, const std::string& problem) const;
+
+  FluidParameters<dim> parameters_;
+  double mass_, h_;
+  ParticleArrays<dim> particles_;
+  std::vector<WallSurface<dim>> walls_;
+  std::vector<std::vector<Vector>> vertex_forces_;
+  std::vector<std::pair<HookPoint, Hook>> hooks_;
+
+  double time_ = 0, dt_ = 0;
+  std::int64_t step_ = 0;
+  int verlet_counter_ = 0;
+  bool set_up_ = false, boundary_moved_ = true, walls_moved_ = true;
+  float dot_rr2_max_ = 0;
+  double acceleration_max_ = 0;
+  std::size_t fastest_particle_ = 0;
+
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  // Staging before finish_setup().
+  std::vector<Vector> staged_fluid_x_, staged_fluid_v_, staged_boundary_x_;
+  std::vector<double> staged_fluid_rho_;
+};
+} // namespace chipflex::sph

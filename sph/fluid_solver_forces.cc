@@ -1,0 +1,202 @@
+// FluidSolver: neighbour sorting and the force pass (fluid, dummy walls, Lennard-Jones
+// walls, gravity), with the pair policies chosen once at set-up.
+
+#include "sph/fluid_solver_impl.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace chipflex::sph
+{
+namespace
+{
+template <int dim, class Viscosity, class Diffusion>
+float run_pass(const ForcePassInput<dim>& in, const PairPolicies& policies, std::size_t nb,
+               std::size_t n)
+{
+  const auto& visc = policies.get<Viscosity>();
+  const auto& diff = policies.get<Diffusion>();
+  boundary_force_pass<dim>(in, visc, diff, 0, nb);
+  return fluid_force_pass<dim>(in, visc, diff, nb, n);
+}
+
+template <int dim, class Viscosity>
+auto select_diffusion(DensityDiffusionModel model)
+{
+  switch (model)
+  {
+  case DensityDiffusionModel::none:
+    return &run_pass<dim, Viscosity, NoDensityDiffusion>;
+  case DensityDiffusionModel::molteni_colagrossi:
+    return &run_pass<dim, Viscosity, MolteniColagrossiDiffusion>;
+  default:
+    return &run_pass<dim, Viscosity, FourtakasDiffusion>;
+  }
+}
+} // namespace
+
+template <int dim>
+void FluidSolver<dim>::Impl::setup(const FluidParameters<dim>& p)
+{
+  const double h = p.smoothing_length(), c0 = p.speed_of_sound;
+  grid.setup(p.domain_min, p.domain_max, 2 * h);
+  eos = TaitEquationOfState(p.reference_density, c0, p.gamma);
+  kernel_factor = float(WendlandKernel<dim>(h).gradient_factor);
+  const float eta2 = float(0.01 * h * h);
+  policies.artificial = {float(2 * p.artificial_viscosity * c0 * h), eta2};
+  policies.laminar = {float(4 * p.kinematic_viscosity), eta2};
+  const float two_delta_h_c0 = float(2 * p.density_diffusion_delta * h * c0);
+  policies.molteni_colagrossi.two_delta_h_c0 = two_delta_h_c0;
+  policies.fourtakas.two_delta_h_c0 = two_delta_h_c0;
+  for (int d = 0; d < 3; ++d)
+    policies.fourtakas.g_over_c2[d] =
+      d < dim ? float(p.reference_density * p.gravity[d] / (c0 * c0)) : 0.0f;
+  pass = p.viscosity == ViscosityModel::artificial
+           ? select_diffusion<dim, ArtificialViscosity>(p.density_diffusion)
+           : select_diffusion<dim, LaminarViscosity>(p.density_diffusion);
+}
+
+template <int dim>
+void FluidSolver<dim>::sort_and_bin()
+{
+  auto& p = particles_;
+  auto& g = impl_->grid;
+  const std::size_t nb = p.n_boundary, n = p.size();
+  const std::size_t first = boundary_moved_ ? 0 : nb;
+  std::size_t bad = n;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (std::size_t i = first; i < n; ++i)
+  {
+    double x[dim];
+    for (int d = 0; d < dim; ++d)
+      x[d] = p.position[d][i];
+    const std::uint32_t c = g.cell_of(x);
+    p.cell[i] = c;
+    bool finite = std::isfinite(p.density[i]);
+    for (int d = 0; d < dim; ++d)
+      finite = finite && std::isfinite(p.velocity[d][i]);
+    if (c == NeighbourGrid<dim>::outside || !finite)
+      bad = std::min(bad, i);
+  }
+  if (bad < n)
+  {
+    bool finite = std::isfinite(p.density[bad]);
+    for (int d = 0; d < dim; ++d)
+      finite = finite && std::isfinite(p.velocity[d][bad]) && std::isfinite(p.position[d][bad]);
+    if (!finite)
+      fail(bad, "has a non-finite position, velocity or density (the run blew up)");
+    std::ostringstream s;
+    s << "left the domain box [";
+    for (int d = 0; d < dim; ++d)
+      s << (d ? ", " : "") << parameters_.domain_min[d];
+    s << "] - [";
+    for (int d = 0; d < dim; ++d)
+      s << (d ? ", " : "") << parameters_.domain_max[d];
+    s << "]";
+    fail(bad, s.str());
+  }
+  if (boundary_moved_)
+  {
+    g.sort(p.cell, 0, nb, impl_->permutation, impl_->boundary_start);
+    p.permute(0, impl_->permutation, impl_->scratch);
+    boundary_moved_ = false;
+  }
+  g.sort(p.cell, nb, n, impl_->permutation, impl_->fluid_start);
+  p.permute(nb, impl_->permutation, impl_->scratch);
+  if (walls_moved_)
+  {
+    std::vector<const WallSurface<dim>*> lj(walls_.size(), nullptr);
+    for (std::size_t w = 0; w < walls_.size(); ++w)
+      if (walls_[w].model == WallModel::lennard_jones && !walls_[w].fluid_passes)
+        lj[w] = &walls_[w];
+    impl_->lennard_jones.bin(lj, g);
+    walls_moved_ = false;
+  }
+}
+
+template <int dim>
+void FluidSolver<dim>::force_pass()
+{
+  sort_and_bin();
+  auto& p = particles_;
+  auto& im = *impl_;
+  const std::size_t nb = p.n_boundary, n = p.size();
+  const float mass = float(mass_);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const float rho = p.density[i];
+    p.pressure_term[i] = im.eos.pressure(rho) / (rho * rho);
+    p.volume[i] = mass / rho;
+  }
+  ForcePassInput<dim> in;
+  for (int d = 0; d < dim; ++d)
+  {
+    in.x[d] = p.position[d].data();
+    in.v[d] = p.velocity[d].data();
+    in.a[d] = p.acceleration[d].data();
+  }
+  in.rho = p.density.data();
+  in.pressure_term = p.pressure_term.data();
+  in.volume = p.volume.data();
+  in.cell = p.cell.data();
+  in.fluid_start = im.fluid_start.data();
+  in.boundary_start = im.boundary_start.data();
+  in.rows = im.grid.row_offsets().data();
+  in.inverse_h = float(1 / h_);
+  in.kernel_factor = im.kernel_factor;
+  in.mass_fluid = in.mass_boundary = mass;
+  in.density_rate = p.density_rate.data();
+  dot_rr2_max_ = im.pass(in, im.policies, nb, n);
+
+  for (auto& forces : vertex_forces_)
+    for (auto& f : forces)
+      f.setZero();
+  // Dummy-wall reactions, in boundary particle order (deterministic).
+  for (std::size_t i = 0; i < nb; ++i)
+  {
+    const auto& a = im.attachments[p.id[i]];
+    if (a.wall == WallAttachment<dim>::no_wall)
+      continue;
+    Vector f;
+    for (int d = 0; d < dim; ++d)
+      f[d] = mass_ * double(p.acceleration[d][i]);
+    const auto& face = walls_[a.wall].faces[a.face];
+    for (int k = 0; k < dim; ++k)
+      vertex_forces_[a.wall][face[k]] += a.weights[k] * f;
+  }
+  im.lennard_jones.apply(p, nb, n, mass_, vertex_forces_);
+
+  // Gravity, and the largest acceleration for the time step.
+  float g[dim];
+  for (int d = 0; d < dim; ++d)
+    g[d] = float(parameters_.gravity[d]);
+  float a2_max = 0;
+#pragma omp parallel for schedule(static) reduction(max : a2_max)
+  for (std::size_t i = nb; i < n; ++i)
+  {
+    float a2 = 0;
+    for (int d = 0; d < dim; ++d)
+    {
+      const float a = p.acceleration[d][i] + g[d];
+      p.acceleration[d][i] = a;
+      a2 += a * a;
+    }
+    a2_max = std::max(a2_max, a2);
+  }
+  acceleration_max_ = std::sqrt(double(a2_max));
+  fastest_particle_ = nb;
+  if (!(acceleration_max_ < 1e300)) // NaN or infinite: name the first culprit
+    for (std::size_t i = nb; i < n; ++i)
+      for (int d = 0; d < dim; ++d)
+        if (!std::isfinite(p.acceleration[d][i]))
+          fail(i, "has a non-finite acceleration (the run blew up)");
+}
+
+template void FluidSolver<2>::Impl::setup(const FluidParameters<2>&);
+template void FluidSolver<3>::Impl::setup(const FluidParameters<3>&);
+template void FluidSolver<2>::sort_and_bin();
+template void FluidSolver<3>::sort_and_bin();
+template void FluidSolver<2>::force_pass();
+template void FluidSolver<3>::force_pass();
+} // namespace chipflex::sph

@@ -1,0 +1,65 @@
+#pragma once
+// Private part of FluidSolver (only its .cc files include this): neighbour grid, sort
+// buffers, wall bins, equation of state and the force pass compiled for the chosen
+// viscosity and density-diffusion policies.
+
+#include "sph/density_diffusion.h"
+#include "sph/dummy_wall_particles.h"
+#include "sph/fluid_solver.h"
+#include "sph/force_loop.h"
+#include "sph/lennard_jones_wall.h"
+#include "sph/neighbour_grid.h"
+#include "sph/tait_equation_of_state.h"
+#include "sph/viscosity_models.h"
+#include "sph/wendland_kernel.h"
+
+namespace chipflex::sph
+{
+struct PairPolicies
+{
+  ArtificialViscosity artificial;
+  LaminarViscosity laminar;
+  NoDensityDiffusion no_diffusion;
+  MolteniColagrossiDiffusion molteni_colagrossi;
+  FourtakasDiffusion fourtakas;
+
+  template <class T>
+  const T& get() const
+  {
+    if constexpr (std::is_same_v<T, ArtificialViscosity>)
+      return artificial;
+    else if constexpr (std::is_same_v<T, LaminarViscosity>)
+      return laminar;
+    else if constexpr (std::is_same_v<T, NoDensityDiffusion>)
+      return no_diffusion;
+    else if constexpr (std::is_same_v<T, MolteniColagrossiDiffusion>)
+      return molteni_colagrossi;
+    else
+      return fourtakas;
+  }
+};
+
+template <int dim>
+struct FluidSolver<dim>::Impl
+{
+  using PassFunction = float (*)(const ForcePassInput<dim>&, const PairPolicies&, std::size_t,
+                                 std::size_t);
+
+  NeighbourGrid<dim> grid;
+  std::vector<std::uint32_t> fluid_start, boundary_start, permutation;
+  std::vector<double> scratch;
+  std::vector<WallAttachment<dim>> attachments; ///< by boundary particle id
+  LennardJonesWalls<dim> lennard_jones;
+  TaitEquationOfState eos{1000, 10, 7};
+  PairPolicies policies;
+  PassFunction pass = nullptr;
+  float kernel_factor = 0;
+
+  void setup(const FluidParameters<dim>& p);
+  std::size_t memory_bytes() const
+  {
+    return (fluid_start.capacity() + boundary_start.capacity() + permutation.capacity()) * 4 +
+           scratch.capacity() * 8;
+  }
+};
+} // namespace chipflex::sph

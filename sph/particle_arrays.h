@@ -1,0 +1,115 @@
+#pragma once
+// The particle state, structure of arrays. Boundary (dummy wall) particles come first,
+// [0, n_boundary), fluid particles follow, [n_boundary, size()). Each block is kept
+// sorted by neighbour cell so that a row of neighbour cells is one contiguous index
+// range (see NeighbourGrid).
+//
+// Positions are double (a 1e-5 m step on a 1 m tank must not round away); velocities,
+// densities and the force-pass results are float: the force arithmetic is float, as in
+// DualSPHysics, which halves memory traffic and doubles the SIMD width.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace chipflex::sph
+{
+template <int dim>
+struct ParticleArrays
+{
+  // State (saved in checkpoints, permuted by sorting).
+  std::array<std::vector<double>, dim> position;
+  std::array<std::vector<float>, dim> velocity;
+  std::vector<float> density;
+  /// Verlet: v and rho of the previous step; symplectic: of the step start.
+  std::array<std::vector<float>, dim> velocity_previous;
+  std::vector<float> density_previous;
+  /// Symplectic only: positions at the step start.
+  std::array<std::vector<double>, dim> position_previous;
+  /// Stable particle number: boundary particles 0..n_boundary-1 (index of their wall
+  /// attachment), fluid particles 0..n_fluid-1 (order of creation).
+  std::vector<std::uint32_t> id;
+
+  // Results of the last force pass (not permuted: recomputed after every sort).
+  std::array<std::vector<float>, dim> acceleration; ///< boundary: reaction force / mass
+  std::vector<float> density_rate;
+  std::vector<float> pressure_term; ///< p / rho^2
+  std::vector<float> volume;        ///< m / rho
+  std::vector<std::uint32_t> cell;
+
+  std::size_t n_boundary = 0;
+  std::size_t size() const { return density.size(); }
+  std::size_t n_fluid() const { return size() - n_boundary; }
+
+  void resize(std::size_t n, bool with_previous_positions)
+  {
+    for (int d = 0; d < dim; ++d)
+    {
+      position[d].resize(n);
+      velocity[d].resize(n);
+      velocity_previous[d].resize(n);
+      position_previous[d].resize(with_previous_positions ? n : 0);
+      acceleration[d].resize(n);
+    }
+    density.resize(n);
+    density_previous.resize(n);
+    id.resize(n);
+    density_rate.resize(n);
+    pressure_term.resize(n);
+    volume.resize(n);
+    cell.resize(n);
+  }
+
+  /// Applies new[k] = old[permutation[k]] over [first, first + permutation.size()) to
+  /// every state array; `scratch` is reused between calls.
+  void permute(std::size_t first, const std::vector<std::uint32_t>& permutation,
+               std::vector<double>& scratch)
+  {
+    scratch.resize(permutation.size());
+    for (int d = 0; d < dim; ++d)
+    {
+      apply(position[d], first, permutation, scratch);
+      apply(velocity[d], first, permutation, scratch);
+      apply(velocity_previous[d], first, permutation, scratch);
+      if (!position_previous[d].empty())
+        apply(position_previous[d], first, permutation, scratch);
+    }
+    apply(density, first, permutation, scratch);
+    apply(density_previous, first, permutation, scratch);
+    apply(id, first, permutation, scratch);
+    apply(cell, first, permutation, scratch);
+  }
+
+  std::size_t memory_bytes() const
+  {
+    std::size_t b = 0;
+    for (int d = 0; d < dim; ++d)
+      b += bytes(position[d]) + bytes(velocity[d]) + bytes(velocity_previous[d]) +
+           bytes(position_previous[d]) + bytes(acceleration[d]);
+    return b + bytes(density) + bytes(density_previous) + bytes(id) + bytes(density_rate) +
+           bytes(pressure_term) + bytes(volume) + bytes(cell);
+  }
+
+private:
+  template <typename T>
+  static std::size_t bytes(const std::vector<T>& v)
+  {
+    return v.capacity() * sizeof(T);
+  }
+  template <typename T>
+  static void apply(std::vector<T>& a, std::size_t first,
+                    const std::vector<std::uint32_t>& permutation, std::vector<double>& scratch)
+  {
+    static_assert(sizeof(T) <= sizeof(double));
+    T* tmp = reinterpret_cast<T*>(scratch.data());
+    const std::size_t n = permutation.size();
+    T* base = a.data() + first;
+#pragma omp parallel for schedule(static)
+    for (std::size_t k = 0; k < n; ++k)
+      tmp[k] = base[permutation[k]];
+    std::memcpy(base, tmp, n * sizeof(T));
+  }
+};
+} // namespace chipflex::sph

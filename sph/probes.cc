@@ -1,0 +1,81 @@
+#include "sph/probes.h"
+
+#include "sph/case_setup.h"
+#include "sph/wendland_kernel.h"
+
+#include <algorithm>
+
+namespace chipflex::sph
+{
+template <int dim>
+double sample_pressure(const FluidSolver<dim>& fluid, const Eigen::Matrix<double, dim, 1>& x)
+{
+  const double h = fluid.parameters().smoothing_length();
+  const WendlandKernel<dim> kernel(h);
+  const auto& p = fluid.particles();
+  double sum_w = 0, sum_pw = 0;
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+  {
+    double r2 = 0;
+    for (int d = 0; d < dim; ++d)
+      r2 += (p.position[d][i] - x[d]) * (p.position[d][i] - x[d]);
+    if (r2 >= 4 * h * h)
+      continue;
+    const double vw = fluid.particle_mass() / p.density[i] * kernel.value(std::sqrt(r2));
+    sum_w += vw;
+    sum_pw += vw * fluid.pressure(i);
+  }
+  return sum_w > 0 ? sum_pw / sum_w : 0.0;
+}
+
+template <int dim>
+double sample_water_height(const FluidSolver<dim>& fluid, const Eigen::Matrix<double, dim, 1>& x)
+{
+  const auto& par = fluid.parameters();
+  const double h = par.smoothing_length();
+  const int up = vertical_axis<dim>(par.gravity);
+  const WendlandKernel<dim> kernel(h);
+  const auto& p = fluid.particles();
+  struct Near
+  {
+    double lateral2, elevation, volume;
+  };
+  std::vector<Near> near;
+  double lo = 1e300, hi = -1e300;
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+  {
+    double lateral2 = 0;
+    for (int d = 0; d < dim; ++d)
+      if (d != up)
+        lateral2 += (p.position[d][i] - x[d]) * (p.position[d][i] - x[d]);
+    if (lateral2 >= 4 * h * h)
+      continue;
+    const double z = p.position[up][i];
+    near.push_back({lateral2, z, fluid.particle_mass() / p.density[i]});
+    lo = std::min(lo, z);
+    hi = std::max(hi, z);
+  }
+  if (near.empty())
+    return x[up];
+  double surface = lo - h;
+  const double step = 0.25 * par.particle_spacing;
+  for (double z = lo; z <= hi + 2 * h; z += step)
+  {
+    double fraction = 0;
+    for (const auto& n : near)
+    {
+      const double r2 = n.lateral2 + (n.elevation - z) * (n.elevation - z);
+      if (r2 < 4 * h * h)
+        fraction += n.volume * kernel.value(std::sqrt(r2));
+    }
+    if (fraction >= 0.5)
+      surface = z;
+  }
+  return surface;
+}
+
+template double sample_pressure(const FluidSolver<2>&, const Eigen::Matrix<double, 2, 1>&);
+template double sample_pressure(const FluidSolver<3>&, const Eigen::Matrix<double, 3, 1>&);
+template double sample_water_height(const FluidSolver<2>&, const Eigen::Matrix<double, 2, 1>&);
+template double sample_water_height(const FluidSolver<3>&, const Eigen::Matrix<double, 3, 1>&);
+} // namespace chipflex::sph

@@ -1,0 +1,18 @@
+#pragma once
+// Gauges, as in DualSPHysics' MeasureTool: the pressure at a point is the Shepard
+// interpolation sum p_j V_j W / sum V_j W over fluid neighbours (0 where dry); the water
+// height on a vertical line is the highest point where the fluid's kernel fraction
+// sum V_j W reaches 1/2, sampled every dp/4.
+
+#include "sph/fluid_solver.h"
+
+namespace chipflex::sph
+{
+template <int dim>
+double sample_pressure(const FluidSolver<dim>& fluid, const Eigen::Matrix<double, dim, 1>& x);
+
+/// Elevation (coordinate along the vertical axis) of the free surface on the vertical
+/// line through x; the lowest fluid elevation minus h if the line is dry.
+template <int dim>
+double sample_water_height(const FluidSolver<dim>& fluid, const Eigen::Matrix<double, dim, 1>& x);
+} // namespace chipflex::sph
