@@ -20,7 +20,8 @@ namespace chipflex::apps
 int mesh_command(const Arguments& args)
 {
   CommandLine cl("chipflex mesh gate|plate -o MESH.msh [options]",
-                 "Generate a gmsh .msh 4.1 mesh with physical groups body, clamp, tip, skin.\n"
+                 "Generate a gmsh .msh 4.1 mesh with physical groups body, clamp, tip, skin and\n"
+                 "the sides xmin, xmax, ymin, ymax (, zmin, zmax).\n"
                  "gate: 2D rectangle thickness (x) by length (y), clamped at the top end;\n"
                  "      with --depth a 3D plate. plate: 3D strip along x, clamped at x = 0.");
   cl.add_positional("KIND", "gate or plate");

@@ -30,6 +30,10 @@ public:
   /// taken up since the start: changed only by external forces. Used by tests.
   virtual Vector linear_momentum() const = 0;
 
+  /// World position of the body's probe point (the gate's free end: mean of the file's
+  /// `tip` node set, the last link's free end, the SPH strip's free-end skin nodes).
+  virtual Vector probe_position() const = 0;
+
   /// The complete dynamic state for checkpoints; restore(state()) is exact.
   virtual std::vector<double> state() const = 0;
   virtual void restore(const std::vector<double>& state) = 0;

@@ -43,6 +43,16 @@ void SphSolidBody::set_skin_forces(const std::vector<Vector>& f)
   solid_.set_external_forces(particle_forces);
 }
 
+SphSolidBody::Vector SphSolidBody::probe_position() const
+{
+  std::vector<Vector> x;
+  skin_positions(x);
+  Vector sum = Vector::Zero();
+  for (int k : skin_map_.tip_nodes)
+    sum += x[k];
+  return sum / static_cast<double>(skin_map_.tip_nodes.size());
+}
+
 void SphSolidBody::advance(double dt)
 {
   substeps_ += solid_.advance(dt);

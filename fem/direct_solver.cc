@@ -4,13 +4,15 @@
 
 namespace chipflex::fem
 {
-DirectSolver::DirectSolver(const dealii::PETScWrappers::MPI::SparseMatrix& stiffness, double c,
-                           const dealii::PETScWrappers::MPI::SparseMatrix& mass)
+DirectSolver::DirectSolver(double c_k, const dealii::PETScWrappers::MPI::SparseMatrix& stiffness,
+                           double c_m, const dealii::PETScWrappers::MPI::SparseMatrix& mass)
 {
   const Mat k = stiffness, m = mass;
   CHIPFLEX_PETSC_CHECK(MatDuplicate(k, MAT_COPY_VALUES, &matrix));
-  if (c != 0)
-    CHIPFLEX_PETSC_CHECK(MatAXPY(matrix, c, m, SAME_NONZERO_PATTERN));
+  if (c_k != 1)
+    CHIPFLEX_PETSC_CHECK(MatScale(matrix, c_k));
+  if (c_m != 0)
+    CHIPFLEX_PETSC_CHECK(MatAXPY(matrix, c_m, m, SAME_NONZERO_PATTERN));
   CHIPFLEX_PETSC_CHECK(MatSetOption(matrix, MAT_SYMMETRIC, PETSC_TRUE));
   CHIPFLEX_PETSC_CHECK(KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(k)), &ksp));
   CHIPFLEX_PETSC_CHECK(KSPSetOptionsPrefix(ksp, "chipflex_direct_"));

@@ -1,5 +1,5 @@
 #pragma once
-// A sparse direct solver for A = K + c M, factorised once (MUMPS Cholesky/LDL^T through
+// A sparse direct solver for A = c_k K + c_m M, factorised once (MUMPS Cholesky/LDL^T through
 // PETSc) and reused for any number of right-hand sides: static modes, static responses,
 // and every Newmark step of the full model. PETSc's own LU is far too slow in 3D.
 
@@ -13,9 +13,9 @@ namespace chipflex::fem
 class DirectSolver
 {
 public:
-  /// Factorises K + c M now. Options prefix `chipflex_direct_` (e.g. for -log_view).
-  DirectSolver(const dealii::PETScWrappers::MPI::SparseMatrix& stiffness, double c,
-               const dealii::PETScWrappers::MPI::SparseMatrix& mass);
+  /// Factorises c_k K + c_m M now. Options prefix `chipflex_direct_`.
+  DirectSolver(double c_k, const dealii::PETScWrappers::MPI::SparseMatrix& stiffness,
+               double c_m, const dealii::PETScWrappers::MPI::SparseMatrix& mass);
   ~DirectSolver();
   DirectSolver(const DirectSolver&) = delete;
   DirectSolver& operator=(const DirectSolver&) = delete;

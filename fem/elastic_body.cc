@@ -122,7 +122,7 @@ void ElasticBody<dim>::setup_system()
       face_dofs.resize(fe->n_dofs_per_face(f));
       cells[c]->face(f)->get_dof_indices(face_dofs);
       for (auto dof : face_dofs)
-        if (!constraints.is_constrained(dof))
+        if (relevant.is_element(dof) && !constraints.is_constrained(dof))
           constraints.add_line(dof);
     }
   }
@@ -388,9 +388,12 @@ void ElasticBody<dim>::assemble_system()
 
   // Clamped DoFs keep a unit-free diagonal entry in K and M; scaling their mass entry down
   // moves the spurious eigenvalues K_ii / M_ii far above any mode we look for.
+  std::vector<std::pair<types::global_dof_index, double>> clamped;
   for (const auto dof : locally_owned_dofs)
     if (constraints.is_constrained(dof))
-      mass_matrix.set(dof, dof, 1e-8 * mass_matrix.diag_element(dof));
+      clamped.emplace_back(dof, mass_matrix.diag_element(dof));
+  for (const auto& [dof, diagonal] : clamped)
+    mass_matrix.set(dof, dof, 1e-8 * diagonal);
   mass_matrix.compress(VectorOperation::insert);
 
   scalar_mass_matrix.resize(n_nodes(), n_nodes());

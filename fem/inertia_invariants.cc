@@ -13,6 +13,7 @@ void compute_inertia_invariants(const Eigen::SparseMatrix<double>& ms, ReducedBo
   body.center_of_mass = x.transpose() * ms_ones / body.mass;
   const Eigen::MatrixXd ms_x = ms * x;
   body.c_xx = x.transpose() * ms_x;
+  body.c_xx = (0.5 * (body.c_xx + body.c_xx.transpose())).eval(); // symmetric by definition
 
   // Second moments about the centre of mass, J = C(x, x) - m c c^T, embedded in 3D
   // (z = 0 in 2D); the inertia tensor is I = trace(J) 1 - J.
@@ -40,10 +41,15 @@ void compute_inertia_invariants(const Eigen::SparseMatrix<double>& ms, ReducedBo
   {
     body.translation_coupling.col(k) = ms_fields[k].transpose() * ones;
     body.c_x_psi[k] = x.transpose() * ms_fields[k];
-    for (int l = 0; l < m; ++l)
+    // C(psi_l, psi_k) = C(psi_k, psi_l)^T exactly (Ms is symmetric).
+    for (int l = k; l < m; ++l)
     {
-      body.c_psi_psi[k * m + l] = fields[k].transpose() * ms_fields[l];
-      body.mass_matrix(k, l) = body.c_psi_psi[k * m + l].trace();
+      Eigen::MatrixXd c = fields[k].transpose() * ms_fields[l];
+      if (l == k)
+        c = (0.5 * (c + c.transpose())).eval();
+      body.c_psi_psi[k * m + l] = c;
+      body.c_psi_psi[l * m + k] = c.transpose();
+      body.mass_matrix(k, l) = body.mass_matrix(l, k) = c.trace();
     }
   }
 }

@@ -117,7 +117,9 @@ void ModalReduction<dim>::compute_normal_modes(ReductionTimings& timings)
   const double target =
     n_rigid ? -1e-8 * diagonal_ratio(body.stiffness_matrix, body.mass_matrix, layout) : 0.;
   const unsigned int n_wanted = n_modes + n_rigid;
-  const auto n_free = body.dof_handler.n_dofs() - body.constraints.n_constraints();
+  const auto n_free =
+    body.dof_handler.n_dofs() -
+    (body.is_clamped() ? dim * body.node_sets.at(body.clamp_group).size() : 0);
   if (n_wanted >= n_free)
     throw InputError("--modes", "asks for " + std::to_string(n_modes) +
                                   " modes; the mesh has only " + std::to_string(n_free) +
@@ -161,7 +163,7 @@ void ModalReduction<dim>::compute_static_modes(ReductionTimings&)
   if (rigid.cols())
     alpha = std::max(eigenvalues.empty() ? 0. : 1e-3 * eigenvalues.front(),
                      1e-10 * diagonal_ratio(body.stiffness_matrix, body.mass_matrix, layout));
-  const DirectSolver solver(body.stiffness_matrix, alpha, body.mass_matrix);
+  const DirectSolver solver(1, body.stiffness_matrix, alpha, body.mass_matrix);
   for (const auto& load : static_cases)
   {
     Eigen::VectorXd f = body.to_nodal(body.load_vector(load));

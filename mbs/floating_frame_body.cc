@@ -454,6 +454,25 @@ void FloatingFrameBody<dim>::forces(const Vector& gravity, Eigen::Ref<Eigen::Vec
 }
 
 template <int dim>
+void FloatingFrameBody<dim>::applied_frame_load(const Vector& gravity, Vector& force,
+                                                Omega& moment) const
+{
+  // Q_R and the world moment about the origin, R x Q_R + A Q_theta (same terms as forces())
+  constexpr int d2 = dim * dim;
+  update_deformation_terms();
+  const Matrix at = rotation_.transpose();
+  force = node_force_sum_ + mass_ * gravity + frame_force_;
+  Eigen::Matrix<double, d2, 1> vec_gq = node_force_gf_ * q_;
+  const Matrix load_moment = (node_force_xf_ + as_matrix<dim>(vec_gq.data())) * rotation_;
+  if constexpr (dim == 2)
+    moment(0) = cross(position_, force) + axial(load_moment) + cross(s_, Vector(at * gravity)) +
+                frame_moment_(0);
+  else
+    moment = position_.cross(force) +
+             rotation_ * (axial(load_moment) + s_.cross(at * gravity)) + frame_moment_;
+}
+
+template <int dim>
 void FloatingFrameBody<dim>::add_tangent(double c_k, double c_d, Eigen::Ref<Eigen::MatrixXd> s) const
 {
   const int m = n_modes_;

@@ -126,6 +126,9 @@ public:
   void mass_matrix(Eigen::Ref<Eigen::MatrixXd> m) const;
   /// Applied forces minus quadratic velocity vector minus elastic and damping forces.
   void forces(const Vector& gravity, Eigen::Ref<Eigen::VectorXd> f) const;
+  /// The applied (not inertial) resultant force and moment about the world origin, both
+  /// in world axes (2D: moment about z): what changes the momenta. Free bodies only.
+  void applied_frame_load(const Vector& gravity, Vector& force, Omega& moment) const;
   /// Adds c_k K_t + c_d D_t, the tangent of -forces() used in the Newton matrix (exact
   /// for a ground-clamped body; the elastic part only for a floating one).
   void add_tangent(double c_k, double c_d, Eigen::Ref<Eigen::MatrixXd> s) const;

@@ -201,10 +201,18 @@ void MultibodySystem<dim>::step(double dt)
   setup();
   if (!initialized_)
     initialize_accelerations();
-  if (options_.scheme == IntegratorOptions::Scheme::generalized_alpha)
+  switch (options_.scheme)
+  {
+  case IntegratorOptions::Scheme::generalized_alpha:
     step_generalized_alpha(dt);
-  else
+    break;
+  case IntegratorOptions::Scheme::symplectic_euler:
     step_symplectic_euler(dt);
+    break;
+  case IntegratorOptions::Scheme::momentum_midpoint:
+    step_momentum_midpoint(dt);
+    break;
+  }
   time_ += dt;
 }
 
@@ -231,6 +239,7 @@ void MultibodySystem<dim>::step_generalized_alpha(double h)
     scatter(incr_, v1_);
   };
   int it = 0;
+  double last_correction = 0;
   for (;; ++it)
   {
     if (it == options_.max_newton_iterations)
@@ -244,9 +253,17 @@ void MultibodySystem<dim>::step_generalized_alpha(double h)
       assemble_constraints();
     rhs_.head(nv_) = f_;
     rhs_.head(nv_).noalias() -= m_ * a1_;
+    // acceleration scale of the Newton test: the largest force term over its mass, so
+    // that a body at rest (a = 0) under balanced loads still has a meaningful tolerance
+    double scale = std::max(a1_.cwiseAbs().maxCoeff(), 1e-12);
+    for (int i = 0; i < nv_; ++i)
+      scale = std::max(scale, std::abs(f_(i)) / m_(i, i));
     if (nc_ > 0)
     {
-      rhs_.head(nv_).noalias() -= g_jac_.transpose() * lambda_;
+      delta_.noalias() = g_jac_.transpose() * lambda_;
+      for (int i = 0; i < nv_; ++i)
+        scale = std::max(scale, std::abs(delta_(i)) / m_(i, i));
+      rhs_.head(nv_) -= delta_;
       rhs_.tail(nc_) = -g_ / beta_p;
     }
     if (it == 0 && refactor)
@@ -259,9 +276,13 @@ void MultibodySystem<dim>::step_generalized_alpha(double h)
     lambda_ += sol_.tail(nc_);
     if (linear_) // exact tangent of a linear system: one iteration solves it
       break;
-    const double scale = std::max(a1_.cwiseAbs().maxCoeff(), 1e-8);
-    if (sol_.head(nv_).cwiseAbs().maxCoeff() <= options_.newton_tolerance * scale)
+    const double correction = sol_.head(nv_).cwiseAbs().maxCoeff();
+    if (correction <= options_.newton_tolerance * scale)
       break;
+    // round-off floor: a correction that no longer shrinks, already tiny, is converged
+    if (correction <= 1e-8 * scale && correction >= 0.5 * last_correction)
+      break;
+    last_correction = correction;
   }
   update_kinematics();
   last_iterations_ = it + 1;
@@ -293,6 +314,116 @@ void MultibodySystem<dim>::step_symplectic_euler(double h)
   if (nc_ > 0)
     project_constraints();
   last_iterations_ = 1;
+}
+
+template <int dim>
+void MultibodySystem<dim>::momenta(Eigen::VectorXd& out)
+{
+  // p = (M v)_R, L = R x p + A (M v)_theta: the frame rows of M v are the momenta about
+  // the frame origin in body axes (see FloatingFrameBody::angular_momentum)
+  for (int i = 0; i < n_bodies(); ++i)
+  {
+    const auto& b = *bodies_[i];
+    if (b.clamped_to_ground())
+      continue;
+    const int o = offsets_[i], n = b.n_velocities();
+    constexpr int r = rotation_dofs<dim>;
+    const Eigen::Matrix<double, dim + r, 1> mv =
+      m_.block(o, o, dim + r, n) * b.velocities();
+    const Vector p = mv.template head<dim>();
+    out.template segment<dim>(o) = p;
+    if constexpr (dim == 2)
+      out(o + 2) = cross(b.position(), p) + mv(2);
+    else
+      out.template segment<3>(o + 3) = b.position().cross(p) + b.rotation() * mv.template tail<3>();
+  }
+}
+
+template <int dim>
+void MultibodySystem<dim>::midpoint_residual(double h, const Eigen::VectorXd& v1, Eigen::VectorXd& r)
+{
+  constexpr int rd = rotation_dofs<dim>;
+  incr_ = (0.5 * h) * (vn_ + v1);
+  vmid_ = 0.5 * (vn_ + v1);
+  delta_ = 0.5 * incr_;
+  scatter(delta_, vmid_); // midpoint state
+  assemble_mass_matrix();
+  assemble_forces();
+  r.noalias() = m_ * (v1 - vn_) / h;
+  r -= f_; // modal rows final; frame rows replaced below
+  for (int i = 0; i < n_bodies(); ++i)
+    if (!bodies_[i]->clamped_to_ground())
+    {
+      Vector force;
+      Eigen::Matrix<double, rd, 1> moment;
+      bodies_[i]->applied_frame_load(gravity_, force, moment);
+      r.template segment<dim>(offsets_[i]) = -force;
+      r.template segment<rd>(offsets_[i] + dim) = -moment;
+    }
+  scatter(incr_, v1); // end state
+  assemble_mass_matrix();
+  momenta(mom1_);
+  for (int i = 0; i < n_bodies(); ++i)
+    if (!bodies_[i]->clamped_to_ground())
+      r.segment(offsets_[i], dim + rd) +=
+        (mom1_.segment(offsets_[i], dim + rd) - mom0_.segment(offsets_[i], dim + rd)) / h;
+}
+
+template <int dim>
+void MultibodySystem<dim>::step_momentum_midpoint(double h)
+{
+  if (nc_ > 0 || !elements_.empty())
+    throw InputError("integrator scheme momentum_midpoint",
+                     "only for bodies without joints or force elements");
+  mom0_.setZero(nv_);
+  mom1_.setZero(nv_);
+  res_.resize(nv_);
+  res2_.resize(nv_);
+  vmid_.resize(nv_);
+  for (int i = 0; i < n_bodies(); ++i)
+  {
+    bodies_[i]->store_base();
+    vn_.segment(offsets_[i], bodies_[i]->n_velocities()) = bodies_[i]->velocities();
+  }
+  assemble_mass_matrix();
+  momenta(mom0_);
+  // predictor from the last accelerations; Newton matrix by forward differences
+  v1_ = vn_ + h * a_;
+  midpoint_residual(h, v1_, res_);
+  Eigen::MatrixXd& jac = kkt_; // nc = 0: same size
+  for (int j = 0; j < nv_; ++j)
+  {
+    const double eps = 1e-7 * (1 + std::abs(v1_(j)));
+    a1_ = v1_;
+    a1_(j) += eps;
+    midpoint_residual(h, a1_, res2_);
+    jac.col(j) = (res2_ - res_) / eps;
+  }
+  lu_.compute(jac);
+  int it = 0;
+  double last_correction = 0;
+  for (;; ++it)
+  {
+    if (it == options_.max_newton_iterations)
+      throw SimulationError("mbs: midpoint Newton did not converge at t = " +
+                            std::to_string(time_) + " s");
+    if (it > 0)
+      midpoint_residual(h, v1_, res_);
+    sol_ = lu_.solve(res_);
+    v1_ -= sol_;
+    const double correction = sol_.cwiseAbs().maxCoeff();
+    const double scale = std::max(v1_.cwiseAbs().maxCoeff(), 1e-12);
+    if (correction <= options_.newton_tolerance * scale ||
+        (correction <= 1e-8 * scale && correction >= 0.5 * last_correction))
+      break;
+    last_correction = correction;
+  }
+  incr_ = (0.5 * h) * (vn_ + v1_);
+  scatter(incr_, v1_);
+  a_ = (v1_ - vn_) / h;
+  abar_ = a_;
+  last_iterations_ = it + 1;
+  factored_h_ = -1;
 }
 
 template <int dim>

@@ -19,6 +19,13 @@
 // Explicit option: semi-implicit (symplectic) Euler with the constraints projected back
 // onto position and velocity level each step; stable only below 2/omega_max.
 //
+// Momentum-conserving option (free bodies without joints or force elements, e.g. chips):
+// implicit midpoint rule whose frame equations are written as discrete balances of
+// linear and angular momentum, (p1 - p0)/h = F_mid, (L1 - L0)/h = M_mid (Simo & Tarnow
+// 1992 do the same for their energy-momentum scheme), so momenta are conserved to the
+// Newton tolerance; modal rows: M(q_mid)(v1 - v0)/h = f(mid). Newton matrix by finite
+// differences once per step.
+//
 // Sub-stepping within a fluid step: set skin forces once, then call step(dt) as often as
 // needed; loads are held constant.
 
@@ -37,7 +44,8 @@ struct IntegratorOptions
   enum class Scheme
   {
     generalized_alpha,
-    symplectic_euler
+    symplectic_euler,
+    momentum_midpoint
   };
   Scheme scheme = Scheme::generalized_alpha;
   double rho_infinity = 0.9; ///< spectral radius at infinite frequency, 0..1
@@ -93,6 +101,9 @@ private:
   void factorize_kkt(double c_k, double c_d, bool with_tangent);
   void step_generalized_alpha(double h);
   void step_symplectic_euler(double h);
+  void step_momentum_midpoint(double h);
+  void midpoint_residual(double h, const Eigen::VectorXd& v1, Eigen::VectorXd& r);
+  void momenta(Eigen::VectorXd& out); ///< frame rows: [p; L] (world), from m_ and state
   void project_constraints();
 
   IntegratorOptions options_;
@@ -117,5 +128,6 @@ private:
   Eigen::MatrixXd m_, g_jac_, kkt_;
   Eigen::VectorXd f_, g_, rhs_, sol_, vn_, v1_, a1_, abar1_, incr_, delta_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::VectorXd mom0_, mom1_, res_, res2_, vmid_;
 };
 } // namespace chipflex::mbs

@@ -86,7 +86,10 @@ std::size_t write_block_mesh(const BlockMeshSpec& spec, const std::string& path)
     std::array<double, 3> lo{0, 0, 0}, hi = spec.extent;
     if (dim == 2)
       hi[2] = 0;
-    const double eps = 1e-6 * longest;
+    // Inflation of the selection boxes: above OpenCASCADE's bounding-box padding (1e-7),
+    // far below the thinnest extent.
+    const double thinnest = *std::min_element(spec.extent.begin(), spec.extent.begin() + dim);
+    const double eps = std::max(1e-3 * thinnest, 1e-6);
     const int a = spec.long_axis;
     auto end_face = [&](bool at_max) {
       auto l = lo, h = hi;
@@ -100,6 +103,17 @@ std::size_t write_block_mesh(const BlockMeshSpec& spec, const std::string& path)
       dim - 1, gmsh::model::addPhysicalGroup(dim - 1, end_face(!spec.clamp_at_max)), "tip");
     gmsh::model::setPhysicalName(
       dim - 1, gmsh::model::addPhysicalGroup(dim - 1, entities_in(dim - 1, lo, hi, eps)), "skin");
+    // Each side by its position, e.g. xmin = the face at x = 0 (the gate's upstream face).
+    const char* axis_name[] = {"x", "y", "z"};
+    for (int axis = 0; axis < dim; ++axis)
+      for (const bool at_max : {false, true})
+      {
+        auto l = lo, h = hi;
+        (at_max ? l : h)[axis] = at_max ? hi[axis] : lo[axis];
+        gmsh::model::setPhysicalName(
+          dim - 1, gmsh::model::addPhysicalGroup(dim - 1, entities_in(dim - 1, l, h, eps)),
+          std::string(axis_name[axis]) + (at_max ? "max" : "min"));
+      }
 
     if (spec.simplex)
     {

@@ -7,6 +7,8 @@
 //   clamp (dim-1)  the clamped end face/edge
 //   tip   (dim-1)  the free end face/edge, opposite the clamp
 //   skin  (dim-1)  the whole boundary (overlaps clamp and tip)
+//   xmin, xmax, ymin, ymax (, zmin, zmax)  (dim-1)  each side by position, e.g. xmin is
+//                  the side at x = 0 (overlapping the groups above)
 
 #include <array>
 #include <string>

@@ -3,6 +3,8 @@
 #include "common/input_error.h"
 #include "sph/tait_equation_of_state.h"
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 
 namespace chipflex::sph

@@ -43,7 +43,7 @@ void FluidSolver<dim>::Impl::setup(const FluidParameters<dim>& p)
   eos = TaitEquationOfState(p.reference_density, c0, p.gamma);
   kernel_factor = float(WendlandKernel<dim>(h).gradient_factor);
   const float eta2 = float(0.01 * h * h);
-  policies.artificial = {float(2 * p.artificial_viscosity * c0 * h), eta2};
+  policies.artificial = {float(-2 * p.artificial_viscosity * c0 * h), eta2};
   policies.laminar = {float(4 * p.kinematic_viscosity), eta2};
   const float two_delta_h_c0 = float(2 * p.density_diffusion_delta * h * c0);
   policies.molteni_colagrossi.two_delta_h_c0 = two_delta_h_c0;

@@ -57,30 +57,46 @@ inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const D
   const float* const pt = in.pressure_term;
   const float* const vol = in.volume;
   const float inv_h = in.inverse_h, kf = in.kernel_factor;
+  const double xi0 = xi[0], xi1 = xi[1], xi2 = xi[2];
+  const float vi0 = vi[0], vi1 = vi[1], vi2 = vi[2];
   float a0 = 0, a1 = 0, a2 = 0, ar = 0, vmax = dot_rr2_max;
+  const std::ptrdiff_t end = je;
 #pragma omp simd reduction(+ : a0, a1, a2, ar) reduction(max : vmax)
-  for (std::uint32_t j = jb; j < je; ++j)
+  for (std::ptrdiff_t j = jb; j < end; ++j)
   {
-    const float dx0 = float(xi[0] - x0[j]);
-    const float dx1 = float(xi[1] - x1[j]);
-    const float dx2 = dim == 3 ? float(xi[2] - x2[j]) : 0.0f;
+    const float dx0 = float(xi0 - x0[j]);
+    const float dx1 = float(xi1 - x1[j]);
+    const float dx2 = dim == 3 ? float(xi2 - x2[j]) : 0.0f;
     const float r2 = dx0 * dx0 + dx1 * dx1 + dx2 * dx2;
     const float t = std::max(0.0f, 1.0f - 0.5f * inv_h * std::sqrt(r2));
     const float fac = kf * t * t * t;
-    const float dv0 = vi[0] - v0[j];
-    const float dv1 = vi[1] - v1[j];
-    const float dv2 = dim == 3 ? vi[2] - v2[j] : 0.0f;
+    const float dv0 = vi0 - v0[j];
+    const float dv1 = vi1 - v1[j];
+    const float dv2 = dim == 3 ? vi2 - v2[j] : 0.0f;
     const float dot = dv0 * dx0 + dv1 * dx1 + dv2 * dx2;
     const float rho_sum = rhoi + rho[j];
-    float dot_rr2;
-    const float s = mj * fac * (pti + pt[j] + visc.gradient_term(dot, r2, rho_sum, dot_rr2));
-    vmax = std::max(vmax, t > 0.0f ? dot_rr2 : 0.0f);
+    float extra, dot_rr2;
+    if constexpr (Viscosity::on_gradient)
+    {
+      const float inv = 1.0f / ((r2 + visc.eta2) * rho_sum);
+      dot_rr2 = dot * rho_sum * inv;
+      extra = visc.coefficient * std::min(dot, 0.0f) * inv;
+    }
+    else
+    {
+      dot_rr2 = dot / (r2 + visc.eta2);
+      extra = 0.0f;
+    }
+    const float s = mj * fac * (pti + pt[j] + extra);
+    // Max over all candidate pairs, in support or not (a masked max stops GCC 12
+    // from vectorising; pairs beyond 2h only add |v_ij|/(2h), negligible beside c0/h).
+    vmax = std::max(vmax, dot_rr2);
     a0 -= s * dx0;
     a1 -= s * dx1;
     a2 -= s * dx2;
     if constexpr (!Viscosity::on_gradient)
     {
-      const float lam = mj * visc.velocity_term(fac, r2, rho_sum);
+      const float lam = mj * visc.coefficient * fac * r2 / (rho_sum * (r2 + visc.eta2));
       a0 += lam * dv0;
       a1 += lam * dv1;
       a2 += lam * dv2;

@@ -7,6 +7,8 @@
 
 #include "sph/wall_surface.h"
 
+#include <Eigen/Geometry>
+
 #include <array>
 #include <cmath>
 

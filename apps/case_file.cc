@@ -1,0 +1,371 @@
+#include "apps/case_file.h"
+
+#include "common/input_error.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace chipflex::apps
+{
+using dealii::ParameterHandler;
+using dealii::Patterns::Anything;
+using dealii::Patterns::Bool;
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+using dealii::Patterns::Selection;
+
+namespace
+{
+void declare_keys(ParameterHandler& prm)
+{
+  prm.declare_entry("dimension", "2", Integer(2, 3), "Space dimension: 2 (per metre depth) or 3.");
+  prm.enter_subsection("fluid");
+  prm.declare_entry("particle spacing", "0.01", Double(0), "Initial particle spacing dp, m.");
+  prm.declare_entry("smoothing coefficient", "1", Double(0),
+                    "h = coefficient * sqrt(dim) * dp (DualSPHysics coefh), -. Kernel support 2h.");
+  prm.declare_entry("reference density", "1000", Double(0), "rho0, kg/m^3.");
+  prm.declare_entry("speed of sound", "0", Double(0),
+                    "c0, m/s. 0: sound coefficient * sqrt(|g| H), H the highest fluid block.");
+  prm.declare_entry("sound coefficient", "20", Double(0),
+                    "Factor on sqrt(|g| H) when speed of sound = 0 (DualSPHysics coefsound), -.");
+  prm.declare_entry("gamma", "7", Double(1), "Tait exponent, -.");
+  prm.declare_entry("gravity", "", Anything(),
+                    "Gravity vector, m/s^2 (dim components); empty: -9.81 along the last axis.");
+  prm.declare_entry("viscosity", "artificial", Selection("artificial|laminar"),
+                    "artificial (Monaghan 1992) or laminar (Lo & Shao 2002).");
+  prm.declare_entry("artificial viscosity", "0.02", Double(0), "Monaghan's alpha, -.");
+  prm.declare_entry("kinematic viscosity", "1e-6", Double(0), "nu for the laminar model, m^2/s.");
+  prm.declare_entry("density diffusion", "fourtakas",
+                    Selection("none|molteni colagrossi|fourtakas"),
+                    "Delta-SPH term: none, molteni colagrossi (2009), fourtakas (2019).");
+  prm.declare_entry("density diffusion delta", "0.1", Double(0), "delta, -.");
+  prm.declare_entry("hydrostatic start", "true", Bool(),
+                    "Start each fluid block with its hydrostatic density (no initial wave).");
+  prm.leave_subsection();
+
+  prm.enter_subsection("time");
+  prm.declare_entry("end time", "1", Double(0), "Simulated time, s.");
+  prm.declare_entry("scheme", "verlet", Selection("verlet|symplectic"),
+                    "verlet (Euler every `verlet euler every` steps) or symplectic.");
+  prm.declare_entry("cfl", "0.2", Double(0), "Courant number on the CFL and force limits, -.");
+  prm.declare_entry("verlet euler every", "40", Integer(1), "Verlet: an Euler step every N steps.");
+  prm.declare_entry("minimum time step", "1e-9", Double(0),
+                    "A time step below this stops the run (blow-up), s.");
+  prm.leave_subsection();
+
+  prm.enter_subsection("output");
+  prm.declare_entry("frame interval", "0.01", Double(0),
+                    "Simulated time between particle frames (particles.xdmf), s.");
+  prm.declare_entry("probe interval", "0.001", Double(0),
+                    "Simulated time between rows of probes.csv, s.");
+  prm.leave_subsection();
+
+  prm.enter_subsection("geometry");
+  prm.declare_entry("fluid blocks", "0, 0, 1, 2", Anything(),
+                    "Fluid boxes 'min corner, max corner' (2*dim numbers, m), separated by ';'.");
+  prm.declare_entry("domain min", "", Anything(),
+                    "Particles must stay in the domain box, m. Empty: automatic "
+                    "(everything plus a quarter of its size on every side).");
+  prm.declare_entry("domain max", "", Anything(), "See domain min, m.");
+  prm.enter_subsection("tank");
+  prm.declare_entry("enabled", "true", Bool(), "A box tank around the fluid.");
+  prm.declare_entry("min corner", "0, 0", Anything(), "Inner faces of the tank walls, m.");
+  prm.declare_entry("max corner", "4, 3", Anything(), "Inner faces of the tank walls, m.");
+  prm.declare_entry("open top", "true", Bool(), "No lid.");
+  prm.declare_entry("wall model", "dummy particles", Selection("dummy particles|lennard jones"),
+                    "dummy particles (dynamic boundary condition) or lennard jones.");
+  prm.declare_entry("dummy layers", "0", Integer(0),
+                    "Dummy particle layers; 0: enough to cover the kernel support (2h).");
+  prm.declare_entry("lennard jones k", "0", Double(0),
+                    "Wall force scale F(0) per unit mass, m/s^2; 0: 10 p_e / (rho0 dp), "
+                    "p_e = rho0 (c0/10)^2.");
+  prm.declare_entry("lennard jones R", "0", Double(0), "Cut-off distance, m; 0: dp.");
+  prm.declare_entry("lennard jones r0", "0", Double(0), "Equilibrium distance, m; 0: dp/2.");
+  prm.leave_subsection();
+  prm.enter_subsection("walls");
+  prm.declare_entry("polylines", "", Anything(),
+                    "2D only: extra walls 'x1, y1, x2, y2, ...' (m), separated by ';'; the "
+                    "fluid side is on the right of the direction of travel.");
+  prm.declare_entry("wall model", "lennard jones", Selection("dummy particles|lennard jones"),
+                    "Model of the extra walls.");
+  prm.leave_subsection();
+  prm.leave_subsection();
+
+  prm.enter_subsection("probes");
+  prm.declare_entry("pressure", "", Anything(),
+                    "Pressure gauges 'name: x, y[, z]' (m), separated by ';' -> p_<name>_Pa.");
+  prm.declare_entry("water height", "", Anything(),
+                    "Water-height gauges 'name: x, y[, z]' (m; the vertical coordinate is "
+                    "ignored), separated by ';' -> h_<name>_m (surface elevation).");
+  prm.leave_subsection();
+  declare_body_keys(prm);
+}
+
+std::string trim(const std::string& s)
+{
+  const auto a = s.find_first_not_of(" \t\n");
+  if (a == std::string::npos)
+    return "";
+  return s.substr(a, s.find_last_not_of(" \t\n") - a + 1);
+}
+
+std::vector<std::string> split(const std::string& s, char separator)
+{
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, separator))
+    if (!trim(item).empty())
+      out.push_back(trim(item));
+  return out;
+}
+
+std::vector<double> numbers(const std::string& key, const std::string& text)
+{
+  std::vector<double> out;
+  for (const auto& item : split(text, ','))
+  {
+    std::size_t used = 0;
+    double v = 0;
+    try
+    {
+      v = std::stod(item, &used);
+    }
+    catch (const std::exception&)
+    {
+      used = 0;
+    }
+    if (used != item.size())
+      throw InputError(key, "'" + text + "' is not a list of numbers");
+    out.push_back(v);
+  }
+  return out;
+}
+
+template <int dim>
+Eigen::Matrix<double, dim, 1> vector_of(const std::string& key, const std::string& text)
+{
+  const auto v = numbers(key, text);
+  if (v.size() != dim)
+    throw InputError(key, "'" + text + "' needs " + std::to_string(dim) + " components");
+  return Eigen::Map<const Eigen::Matrix<double, dim, 1>>(v.data());
+}
+
+template <int dim>
+std::vector<sph::Probe<dim>> probes_of(const std::string& key, const std::string& text)
+{
+  std::vector<sph::Probe<dim>> out;
+  for (const auto& item : split(text, ';'))
+  {
+    const auto colon = item.find(':');
+    if (colon == std::string::npos || trim(item.substr(0, colon)).empty())
+      throw InputError(key, "'" + item + "' is not 'name: x, y" + (dim == 3 ? ", z'" : "'"));
+    const std::string name = trim(item.substr(0, colon));
+    if (name.find_first_of(" ,\"") != std::string::npos)
+      throw InputError(key, "probe name '" + name + "' must not contain spaces, commas or quotes");
+    out.push_back({name, vector_of<dim>(key, item.substr(colon + 1))});
+  }
+  return out;
+}
+
+template <int dim>
+void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c)
+{
+  auto& f = c.fluid;
+  prm.enter_subsection("fluid");
+  f.particle_spacing = prm.get_double("particle spacing");
+  if (!(f.particle_spacing > 0))
+    throw InputError("fluid/particle spacing", "must be positive");
+  f.smoothing_coefficient = prm.get_double("smoothing coefficient");
+  f.reference_density = prm.get_double("reference density");
+  f.speed_of_sound = prm.get_double("speed of sound");
+  c.sound_coefficient = prm.get_double("sound coefficient");
+  f.gamma = prm.get_double("gamma");
+  f.gravity = Eigen::Matrix<double, dim, 1>::Zero();
+  f.gravity[dim - 1] = -9.81;
+  if (!trim(prm.get("gravity")).empty())
+    f.gravity = vector_of<dim>("fluid/gravity", prm.get("gravity"));
+  f.viscosity = prm.get("viscosity") == "laminar" ? sph::ViscosityModel::laminar
+                                                  : sph::ViscosityModel::artificial;
+  f.artificial_viscosity = prm.get_double("artificial viscosity");
+  f.kinematic_viscosity = prm.get_double("kinematic viscosity");
+  const std::string diffusion = prm.get("density diffusion");
+  f.density_diffusion = diffusion == "none" ? sph::DensityDiffusionModel::none
+                        : diffusion == "fourtakas"
+                          ? sph::DensityDiffusionModel::fourtakas
+                          : sph::DensityDiffusionModel::molteni_colagrossi;
+  f.density_diffusion_delta = prm.get_double("density diffusion delta");
+  c.hydrostatic_start = prm.get_bool("hydrostatic start");
+  prm.leave_subsection();
+
+  prm.enter_subsection("time");
+  c.end_time = prm.get_double("end time");
+  f.scheme = prm.get("scheme") == "symplectic" ? sph::TimeScheme::symplectic
+                                               : sph::TimeScheme::verlet;
+  f.cfl = prm.get_double("cfl");
+  f.verlet_euler_every = prm.get_integer("verlet euler every");
+  f.minimum_time_step = prm.get_double("minimum time step");
+  prm.leave_subsection();
+
+  prm.enter_subsection("output");
+  c.output_interval = prm.get_double("frame interval");
+  prm.leave_subsection();
+
+  prm.enter_subsection("geometry");
+  for (const auto& block : split(prm.get("fluid blocks"), ';'))
+  {
+    const auto v = numbers("geometry/fluid blocks", block);
+    if (v.size() != 2 * dim)
+      throw InputError("geometry/fluid blocks",
+                       "'" + block + "' needs " + std::to_string(2 * dim) + " numbers");
+    sph::FluidBlock<dim> b;
+    for (int d = 0; d < dim; ++d)
+      b.min[d] = v[d], b.max[d] = v[dim + d];
+    if (!((b.max - b.min).minCoeff() > 0))
+      throw InputError("geometry/fluid blocks", "'" + block + "': max corner must exceed min");
+    c.fluid_blocks.push_back(b);
+  }
+  const std::string dmin = prm.get("domain min"), dmax = prm.get("domain max");
+  c.automatic_domain = trim(dmin).empty() && trim(dmax).empty();
+  if (!c.automatic_domain)
+  {
+    f.domain_min = vector_of<dim>("geometry/domain min", dmin);
+    f.domain_max = vector_of<dim>("geometry/domain max", dmax);
+  }
+  prm.enter_subsection("tank");
+  c.tank.enabled = prm.get_bool("enabled");
+  c.tank.min = vector_of<dim>("geometry/tank/min corner", prm.get("min corner"));
+  c.tank.max = vector_of<dim>("geometry/tank/max corner", prm.get("max corner"));
+  if (c.tank.enabled && !((c.tank.max - c.tank.min).minCoeff() > 0))
+    throw InputError("geometry/tank/max corner", "must lie above the min corner");
+  c.tank.open_top = prm.get_bool("open top");
+  c.tank.model = prm.get("wall model") == "lennard jones" ? sph::WallModel::lennard_jones
+                                                          : sph::WallModel::dummy_particles;
+  c.tank.layers = prm.get_integer("dummy layers");
+  c.tank.lennard_jones = {prm.get_double("lennard jones k"), prm.get_double("lennard jones R"),
+                          prm.get_double("lennard jones r0")};
+  prm.leave_subsection();
+  prm.enter_subsection("walls");
+  const auto lines = split(prm.get("polylines"), ';');
+  if (!lines.empty() && dim != 2)
+    throw InputError("geometry/walls/polylines", "extra polyline walls are 2D only");
+  for (std::size_t k = 0; k < lines.size(); ++k)
+  {
+    const auto v = numbers("geometry/walls/polylines", lines[k]);
+    if (v.size() < 4 || v.size() % 2)
+      throw InputError("geometry/walls/polylines", "'" + lines[k] + "' needs x, y pairs (>= 2)");
+    sph::WallSurface<dim> w;
+    w.name = "wall " + std::to_string(k + 1);
+    w.model = prm.get("wall model") == "lennard jones" ? sph::WallModel::lennard_jones
+                                                       : sph::WallModel::dummy_particles;
+    for (std::size_t i = 0; i + 1 < v.size(); i += 2)
+    {
+      Eigen::Matrix<double, dim, 1> x = Eigen::Matrix<double, dim, 1>::Zero();
+      x[0] = v[i], x[1] = v[i + 1];
+      w.vertices.push_back(x);
+    }
+    for (int i = 0; i + 1 < int(w.vertices.size()); ++i)
+    {
+      std::array<int, dim> face{};
+      face[0] = i, face[1] = i + 1;
+      w.faces.push_back(face);
+    }
+    c.walls.push_back(w);
+  }
+  prm.leave_subsection();
+  prm.leave_subsection();
+
+  prm.enter_subsection("probes");
+  c.pressure_probes = probes_of<dim>("probes/pressure", prm.get("pressure"));
+  c.height_probes = probes_of<dim>("probes/water height", prm.get("water height"));
+  prm.leave_subsection();
+}
+
+/// deal.II's exception text is a multi-line block; keep its "additional information"
+/// as one line.
+std::string one_line(const std::string& what)
+{
+  std::string s = what;
+  const auto info = s.find("Additional information:");
+  if (info != std::string::npos)
+    s = s.substr(info + 23);
+  const auto stack = s.find("Stacktrace:");
+  if (stack != std::string::npos)
+    s = s.substr(0, stack);
+  std::string out;
+  bool space = false;
+  for (char ch : s)
+  {
+    if (ch == '\n' || ch == '\t' || ch == ' ')
+      space = !out.empty();
+    else
+    {
+      if (space)
+        out += ' ';
+      out += ch;
+      space = false;
+    }
+  }
+  while (!out.empty() && (out.back() == '-' || out.back() == ' '))
+    out.pop_back();
+  return out;
+}
+} // namespace
+
+void declare_body_keys(ParameterHandler& prm)
+{
+  prm.enter_subsection("bodies");
+  prm.declare_entry("count", "0", Integer(0),
+                    "Reserved for coupled bodies (coupling/ declares the body keys here).");
+  prm.leave_subsection();
+}
+
+std::string documented_case_keys()
+{
+  ParameterHandler prm;
+  declare_keys(prm);
+  std::ostringstream out;
+  prm.print_parameters(out, ParameterHandler::OutputStyle::PRM);
+  return out.str();
+}
+
+CaseFile read_case_file(const std::string& path)
+{
+  std::ifstream in(path);
+  if (!in)
+    throw InputError(path, "cannot open the case file");
+  CaseFile c;
+  c.path = path;
+  c.parameters = std::make_shared<ParameterHandler>();
+  auto& prm = *c.parameters;
+  declare_keys(prm);
+  try
+  {
+    prm.parse_input(in, path, "", false);
+  }
+  catch (const dealii::ExceptionBase& e)
+  {
+    throw InputError(path, one_line(e.what()));
+  }
+  try
+  {
+    c.dimension = int(prm.get_integer("dimension"));
+    if (c.dimension == 2)
+      fill(prm, c.case_2d);
+    else
+      fill(prm, c.case_3d);
+    c.end_time = c.dimension == 2 ? c.case_2d.end_time : c.case_3d.end_time;
+    c.frame_interval = c.dimension == 2 ? c.case_2d.output_interval : c.case_3d.output_interval;
+    prm.enter_subsection("output");
+    c.probe_interval = prm.get_double("probe interval");
+    prm.leave_subsection();
+  }
+  catch (const InputError& e)
+  {
+    throw InputError(path, e.what());
+  }
+  return c;
+}
+} // namespace chipflex::apps

@@ -1,0 +1,40 @@
+#pragma once
+// Reading a `chipflex run` case file (deal.II ParameterHandler format). Every key is
+// declared once in case_file.cc with its unit and default (`chipflex run --print-keys`
+// prints them all). An unknown key, a bad value or a missing file throws InputError
+// naming the file, the key and the value.
+//
+// The case fills plain sph:: structs; the raw ParameterHandler stays available so that
+// coupling/ can read `subsection bodies` (declared in declare_body_keys()).
+
+#include "sph/case_setup.h"
+
+#include <memory>
+#include <string>
+
+namespace dealii
+{
+class ParameterHandler;
+}
+
+namespace chipflex::apps
+{
+struct CaseFile
+{
+  std::string path;
+  int dimension = 2;
+  double end_time = 1, frame_interval = 0.01, probe_interval = 0.001; ///< s
+  sph::CaseDescription<2> case_2d;
+  sph::CaseDescription<3> case_3d;
+  /// The parsed file (for subsections that other layers read, e.g. bodies).
+  std::shared_ptr<dealii::ParameterHandler> parameters;
+};
+
+CaseFile read_case_file(const std::string& path);
+
+/// All keys with their documentation and defaults, in ParameterHandler's .prm format.
+std::string documented_case_keys();
+
+/// Declares `subsection bodies`. Reserved for coupling/: it adds its keys here.
+void declare_body_keys(dealii::ParameterHandler& prm);
+} // namespace chipflex::apps

@@ -1,0 +1,125 @@
+#include "apps/particle_output.h"
+
+#include "common/atomic_output.h"
+#include "common/hdf5_file.h"
+#include "sph/fluid_solver.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace chipflex::apps
+{
+template <int dim>
+ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid)
+{
+  ParticleFrame f;
+  f.n = fluid.n_particles();
+  f.position.assign(3 * f.n, 0.0);
+  f.velocity.assign(3 * f.n, 0.0);
+  f.pressure.resize(f.n);
+  f.density.resize(f.n);
+  f.kind.resize(f.n);
+  const auto& p = fluid.particles();
+  for (std::size_t i = 0; i < f.n; ++i)
+  {
+    for (int d = 0; d < dim; ++d)
+    {
+      f.position[3 * i + d] = p.position[d][i];
+      f.velocity[3 * i + d] = p.velocity[d][i];
+    }
+    f.pressure[i] = fluid.pressure(i);
+    f.density[i] = p.density[i];
+    f.kind[i] = std::int64_t(fluid.kind(i));
+  }
+  return f;
+}
+
+template ParticleFrame particle_frame(const sph::FluidSolver<2>&);
+template ParticleFrame particle_frame(const sph::FluidSolver<3>&);
+
+ParticleOutput::ParticleOutput(const std::string& directory) : directory_(directory)
+{
+  std::filesystem::create_directories(directory_ + "/particles");
+}
+
+void ParticleOutput::resume(double time)
+{
+  frames_.clear();
+  for (std::size_t k = 0;; ++k)
+  {
+    char name[64];
+    std::snprintf(name, sizeof name, "particles/frame_%06zu.h5", k);
+    const std::string path = directory_ + "/" + name;
+    if (!std::filesystem::exists(path))
+      break;
+    Hdf5File h5(path, Hdf5File::Mode::read);
+    const double t = h5.read_double_attribute("/", "time");
+    if (t > time * (1 + 1e-12) + 1e-15)
+      break;
+    frames_.push_back({t, std::size_t(h5.read_integer_attribute("/", "n_particles")), name});
+  }
+}
+
+void ParticleOutput::write(double time, const ParticleFrame& f)
+{
+  char name[64];
+  std::snprintf(name, sizeof name, "particles/frame_%06zu.h5", frames_.size());
+  {
+    AtomicOutput out(directory_ + "/" + name);
+    {
+      Hdf5File h5(out.temporary_path(), Hdf5File::Mode::create);
+      h5.write_attribute("/", "time", time);
+      h5.write_attribute("/", "n_particles", std::int64_t(f.n));
+      h5.write("/position", f.position, {f.n, 3});
+      h5.write("/velocity", f.velocity, {f.n, 3});
+      h5.write("/pressure", f.pressure, {f.n});
+      h5.write("/density", f.density, {f.n});
+      h5.write("/kind", f.kind, {f.n});
+    }
+    out.commit();
+  }
+  frames_.push_back({time, f.n, name});
+  write_xdmf();
+}
+
+void ParticleOutput::write_xdmf() const
+{
+  AtomicOutput out(directory_ + "/particles.xdmf");
+  {
+    std::ofstream x(out.temporary_path());
+    x.precision(17);
+    x << "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+         "<Xdmf Version=\"2.0\">\n <Domain>\n"
+         "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (const auto& f : frames_)
+    {
+      auto item = [&](const std::string& set, int components, const char* type, int bytes) {
+        std::string dims = std::to_string(f.n) + (components > 1 ? " 3" : "");
+        return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + type +
+               "\" Precision=\"" + std::to_string(bytes) + "\" Format=\"HDF\">" + f.file +
+               ":/" + set + "</DataItem>";
+      };
+      x << "   <Grid Name=\"frame\" GridType=\"Uniform\">\n"
+        << "    <Time Value=\"" << f.time << "\"/>\n"
+        << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << f.n
+        << "\" NodesPerElement=\"1\"/>\n"
+        << "    <Geometry GeometryType=\"XYZ\">" << item("position", 3, "Float", 8)
+        << "</Geometry>\n";
+      const char* vectors[] = {"velocity"};
+      for (const char* v : vectors)
+        x << "    <Attribute Name=\"" << v << "\" AttributeType=\"Vector\" Center=\"Node\">"
+          << item(v, 3, "Float", 8) << "</Attribute>\n";
+      for (const char* s : {"pressure", "density"})
+        x << "    <Attribute Name=\"" << s << "\" AttributeType=\"Scalar\" Center=\"Node\">"
+          << item(s, 1, "Float", 8) << "</Attribute>\n";
+      x << "    <Attribute Name=\"kind\" AttributeType=\"Scalar\" Center=\"Node\">"
+        << item("kind", 1, "Int", 8) << "</Attribute>\n   </Grid>\n";
+    }
+    x << "  </Grid>\n </Domain>\n</Xdmf>\n";
+    if (!x)
+      throw std::runtime_error("cannot write " + out.temporary_path());
+  }
+  out.commit();
+}
+} // namespace chipflex::apps

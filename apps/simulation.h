@@ -1,0 +1,38 @@
+#pragma once
+// What `chipflex run` drives: a simulation that advances step by step, reports its
+// time, particle frames and probe values, and saves/restores its complete state.
+// FluidSimulation (apps/fluid_simulation.h) is the SPH fluid alone; a coupled
+// simulation (coupling/) wraps it and adds bodies, their state and their outputs.
+
+#include "apps/particle_output.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace chipflex
+{
+class Hdf5File;
+}
+
+namespace chipflex::apps
+{
+class Simulation
+{
+public:
+  virtual ~Simulation() = default;
+  /// One time step.
+  virtual void advance() = 0;
+  virtual double time() const = 0;
+  virtual std::int64_t step_count() const = 0;
+  virtual ParticleFrame frame() const = 0;
+  /// CSV column names and the current values, same order.
+  virtual std::vector<std::string> probe_columns() const = 0;
+  virtual std::vector<double> probe_values() const = 0;
+  /// Complete state into / from an open checkpoint file (each part in its own group).
+  virtual void save(Hdf5File& file) const = 0;
+  virtual void load(const Hdf5File& file) = 0;
+  /// A few lines describing the set-up, printed at the start.
+  virtual std::string summary() const = 0;
+};
+} // namespace chipflex::apps

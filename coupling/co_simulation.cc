@@ -1,0 +1,125 @@
+#include "coupling/co_simulation.h"
+
+#include "common/hdf5_file.h"
+#include "common/input_error.h"
+#include "sph/lennard_jones_wall.h"
+
+namespace chipflex::coupling
+{
+template <int dim>
+CoSimulation<dim>::CoSimulation(sph::FluidSolver<dim>& fluid) : fluid_(fluid)
+{
+  fluid_.add_hook(sph::HookPoint::before_forces,
+                  [this](sph::FluidSolver<dim>&) { publish_skins(); });
+  fluid_.add_hook(sph::HookPoint::after_step,
+                  [this](sph::FluidSolver<dim>&) { exchange_and_advance(); });
+}
+
+template <int dim>
+int CoSimulation<dim>::add_body(CoupledBody<dim>& body, const std::string& name,
+                                sph::WallModel model, sph::LennardJonesParameters lennard_jones,
+                                double expected_pressure)
+{
+  if (fluid_.step_count() > 0)
+    throw std::logic_error("CoSimulation::add_body after the first step");
+  for (const auto& c : bodies_)
+    if (c.name == name)
+      throw InputError("body '" + name + "'", "a body of that name exists already");
+  const auto& p = fluid_.parameters();
+  if (model == sph::WallModel::lennard_jones)
+  {
+    const double c0 = p.speed_of_sound;
+    const double pe =
+      expected_pressure > 0 ? expected_pressure : p.reference_density * (c0 / 10) * (c0 / 10);
+    lennard_jones = sph::derive_lennard_jones(lennard_jones, p.particle_spacing,
+                                              p.reference_density, pe, name);
+  }
+  Coupled c;
+  c.body = &body;
+  c.name = name;
+  c.wall = std::make_unique<SkinWall<dim>>(body.skin(), name, model, lennard_jones);
+  c.wall_id = fluid_.add_wall(c.wall->surface());
+  bodies_.push_back(std::move(c));
+  return static_cast<int>(bodies_.size()) - 1;
+}
+
+template <int dim>
+void CoSimulation<dim>::publish_skins()
+{
+  for (auto& c : bodies_)
+  {
+    c.wall->publish();
+    fluid_.move_wall(c.wall_id, c.wall->surface().vertices, c.wall->surface().velocities);
+  }
+}
+
+template <int dim>
+void CoSimulation<dim>::exchange_and_advance()
+{
+  const double dt = fluid_.last_time_step();
+  for (auto& c : bodies_)
+  {
+    c.wall->deliver(fluid_.wall_vertex_forces(c.wall_id));
+    c.body->advance(dt);
+  }
+}
+
+template <int dim>
+double CoSimulation<dim>::step()
+{
+  return fluid_.step();
+}
+
+template <int dim>
+typename CoSimulation<dim>::Vector CoSimulation<dim>::fluid_momentum() const
+{
+  const auto& p = fluid_.particles();
+  Vector sum = Vector::Zero();
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+    for (int d = 0; d < dim; ++d)
+      sum[d] += p.velocity[d][i];
+  return fluid_.particle_mass() * sum;
+}
+
+template <int dim>
+typename CoSimulation<dim>::Vector CoSimulation<dim>::total_momentum() const
+{
+  Vector sum = fluid_momentum();
+  for (const auto& c : bodies_)
+    sum += c.body->linear_momentum();
+  return sum;
+}
+
+template <int dim>
+void CoSimulation<dim>::save(Hdf5File& file, const std::string& group) const
+{
+  fluid_.save(file, group + "/fluid");
+  file.ensure_group(group + "/bodies");
+  for (const auto& c : bodies_)
+  {
+    const auto state = c.body->state();
+    file.write(group + "/bodies/" + c.name, state, {state.size()});
+    file.write_attribute(group + "/bodies/" + c.name, "kind", c.body->kind());
+  }
+}
+
+template <int dim>
+void CoSimulation<dim>::load(const Hdf5File& file, const std::string& group)
+{
+  fluid_.load(file, group + "/fluid");
+  for (auto& c : bodies_)
+  {
+    const std::string path = group + "/bodies/" + c.name;
+    if (!file.exists(path))
+      throw InputError(file.path(), "checkpoint has no state for body '" + c.name + "'");
+    const auto kind = file.read_string_attribute(path, "kind");
+    if (kind != c.body->kind())
+      throw InputError(file.path(), "body '" + c.name + "' is a " + c.body->kind() +
+                                      " here but a " + kind + " in the checkpoint");
+    c.body->restore(file.read_doubles(path));
+  }
+}
+
+template class CoSimulation<2>;
+template class CoSimulation<3>;
+} // namespace chipflex::coupling

@@ -1,0 +1,13 @@
+// Catch2 main for the fem tests: PETSc/SLEPc (through deal.II) need MPI initialised once
+// per process, before any test and finalised after all of them.
+#define CATCH_CONFIG_RUNNER
+#include <catch2/catch.hpp>
+#include <deal.II/base/mpi.h>
+
+int main(int argc, char** argv)
+{
+  // PETSc must not see Catch's options: it gets the program name only.
+  int petsc_argc = 1;
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(petsc_argc, argv, 1);
+  return Catch::Session().run(argc, argv);
+}

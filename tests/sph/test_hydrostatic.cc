@@ -1,0 +1,52 @@
+// Hydrostatic tank (validation): a water column H = 0.3 m at rest between dummy-particle
+// walls. After settling, the gauge pressure averaged over the last 0.5 s of a 3 s run
+// is within 2 % of rho0 g (H - y) (the analytic hydrostatic pressure) at three depths,
+// and no fluid particle crosses a wall at any step.
+
+#include "sph/fluid_solver.h"
+#include "sph/probes.h"
+#include "sph_test_cases.h"
+
+#include <catch2/catch.hpp>
+
+using namespace chipflex::sph;
+
+TEST_CASE("hydrostatic tank: pressure within 2 % of rho g (H - y) and walls hold",
+          "[sph][validation]")
+{
+  const double width = 0.4, H = 0.3, dp = 0.01;
+  auto c = testing::water_column(width, H, dp);
+  auto fluid = build_fluid(c);
+  const double rho0 = c.fluid.reference_density, g = 9.81;
+  const std::vector<double> depths_y = {0.05, 0.1, 0.15};
+  std::vector<double> sum(depths_y.size(), 0.0);
+  int samples = 0;
+  double lowest = 1, leftmost = 1, rightmost = -1;
+  while (fluid->time() < 3.0)
+  {
+    fluid->step();
+    for (std::size_t i = fluid->n_boundary(); i < fluid->n_particles(); ++i)
+    {
+      const auto x = fluid->position(i);
+      lowest = std::min(lowest, x[1]);
+      leftmost = std::min(leftmost, x[0]);
+      rightmost = std::max(rightmost, x[0]);
+    }
+    if (fluid->time() > 2.5 && fluid->step_count() % 10 == 0)
+    {
+      for (std::size_t k = 0; k < depths_y.size(); ++k)
+        sum[k] += sample_pressure(*fluid, Eigen::Vector2d(0.5 * width, depths_y[k]));
+      ++samples;
+    }
+  }
+  CHECK(lowest > 0);
+  CHECK(leftmost > 0);
+  CHECK(rightmost < width);
+  for (std::size_t k = 0; k < depths_y.size(); ++k)
+  {
+    const double p = sum[k] / samples, expected = rho0 * g * (H - depths_y[k]);
+    INFO("y = " << depths_y[k] << " m: p = " << p << " Pa, rho g (H - y) = " << expected
+                << " Pa, error " << 100 * (p / expected - 1) << " %");
+    CHECK(std::abs(p / expected - 1) < 0.02);
+  }
+}
