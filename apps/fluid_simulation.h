@@ -15,10 +15,15 @@ class FluidSimulation : public Simulation
 public:
   explicit FluidSimulation(const sph::CaseDescription<dim>& description);
 
+  /// Bodies (coupling/) may add walls and hooks to fluid() until the first frame or step.
   void advance() override { fluid_->step(); }
   double time() const override { return fluid_->time(); }
   std::int64_t step_count() const override { return fluid_->step_count(); }
-  ParticleFrame frame() const override { return particle_frame(*fluid_); }
+  ParticleFrame frame() const override
+  {
+    fluid_->initialise();
+    return particle_frame(*fluid_);
+  }
   std::vector<std::string> probe_columns() const override;
   std::vector<double> probe_values() const override;
   void save(Hdf5File& file) const override;

@@ -67,7 +67,8 @@ ReducedBodyData synthetic_body(int n_modes)
       }
     }
   }
-  auto inner = [&](int a, int b) {
+  auto inner = [&](int a, int b)
+  {
     double sum = 0;
     for (int i = 0; i < n; ++i)
       sum += mass(i) * d.psi.block<3, 1>(3 * i, a).dot(d.psi.block<3, 1>(3 * i, b));
@@ -87,20 +88,19 @@ ReducedBodyData synthetic_body(int n_modes)
     d.frequencies_hz(k) = 10.0 * (k + 1);
     d.stiffness_matrix(k, k) = std::pow(2 * M_PI * d.frequencies_hz(k), 2);
   }
-  auto rows = [&](int k) {
+  auto rows = [&](int k)
+  {
     Eigen::MatrixXd r(n, 3);
     for (int i = 0; i < n; ++i)
       r.row(i) = d.psi.block<3, 1>(3 * i, k).transpose();
     return r;
   };
-  auto outer = [&](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) -> Eigen::MatrixXd {
-    return a.transpose() * mass.asDiagonal() * b;
-  };
+  auto outer = [&](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) -> Eigen::MatrixXd
+  { return a.transpose() * mass.asDiagonal() * b; };
   d.mass = mass.sum();
   d.center_of_mass = d.nodes.transpose() * mass / d.mass;
   d.c_xx = outer(d.nodes, d.nodes);
-  const Eigen::Matrix3d s_c =
-    d.c_xx - d.mass * d.center_of_mass * d.center_of_mass.transpose();
+  const Eigen::Matrix3d s_c = d.c_xx - d.mass * d.center_of_mass * d.center_of_mass.transpose();
   d.inertia_tensor = s_c.trace() * Eigen::Matrix3d::Identity() - s_c;
   d.translation_coupling.resize(3, n_modes);
   std::vector<Eigen::MatrixXd> r(n_modes);
@@ -155,10 +155,12 @@ double flexible_body_step(const ReducedBodyData& data, bool clamped, long steps,
     fi(1) = 1e-3;
   body.set_skin_forces(f);
   long total_iterations = 0;
-  const double us = time_steps<dim>(steps, [&] {
-    system.step(1e-5);
-    total_iterations += system.last_newton_iterations();
-  });
+  const double us = time_steps<dim>(steps,
+                                    [&]
+                                    {
+                                      system.step(1e-5);
+                                      total_iterations += system.last_newton_iterations();
+                                    });
   iterations = double(total_iterations) / (steps + steps / 10);
   return us;
 }
@@ -176,8 +178,8 @@ int mbs_step_benchmark(const Arguments& args)
   if (!cl.parse(args))
     return 0;
   const long steps = cl.get_int("--steps");
-  const ReducedBodyData data =
-    cl.has("--body") ? read_reduced_body(cl.get("--body")) : synthetic_body(int(cl.get_int("--modes")));
+  const ReducedBodyData data = cl.has("--body") ? read_reduced_body(cl.get("--body"))
+                                                : synthetic_body(int(cl.get_int("--modes")));
   std::printf("body: %s, dim %d, %d nodes, %zu skin nodes, %d modes\n", data.mesh_file.c_str(),
               data.dim, data.n_nodes(), data.skin_nodes.size(), data.n_modes());
 
@@ -198,11 +200,13 @@ int mbs_step_benchmark(const Arguments& args)
       system.add_body(std::make_unique<mbs::FloatingFrameBody<3>>(data));
       auto& body = system.body(0);
       std::vector<Eigen::Vector3d> x, f(body.n_skin_nodes(), Eigen::Vector3d(0, 1e-3, 0));
-      const double us = time_steps<3>(steps / 10, [&] {
-        body.set_skin_forces(f);
-        body.skin_positions(x);
-        body.skin_velocities(x);
-      });
+      const double us = time_steps<3>(steps / 10,
+                                      [&]
+                                      {
+                                        body.set_skin_forces(f);
+                                        body.skin_positions(x);
+                                        body.skin_velocities(x);
+                                      });
       std::printf("skin exchange (forces in, positions and velocities out): %8.2f us\n", us);
     }
   }
@@ -214,10 +218,12 @@ int mbs_step_benchmark(const Arguments& args)
   auto& last = chain_system.body(chain.links.back());
   last.set_node_forces(last.node_set("tip"), {Eigen::Vector2d(0.5, 0), Eigen::Vector2d(0.5, 0)});
   long chain_iterations = 0;
-  const double us_chain = time_steps<2>(steps, [&] {
-    chain_system.step(1e-5);
-    chain_iterations += chain_system.last_newton_iterations();
-  });
+  const double us_chain = time_steps<2>(steps,
+                                        [&]
+                                        {
+                                          chain_system.step(1e-5);
+                                          chain_iterations += chain_system.last_newton_iterations();
+                                        });
   std::printf("3-link rigid chain (Table 2)      %8.2f us/step  (%.2f Newton iterations/step)\n",
               us_chain, double(chain_iterations) / (steps + steps / 10));
   return 0;

@@ -6,7 +6,7 @@ namespace chipflex::mbs
 {
 template <int dim>
 CompositeSkin<dim>::CompositeSkin(std::vector<FloatingFrameBody<dim>*> bodies)
-  : bodies_(std::move(bodies))
+    : bodies_(std::move(bodies))
 {
   first_node_.push_back(0);
   for (const auto* b : bodies_)

@@ -25,7 +25,8 @@
 //   h_R  = A (omega x (omega x s) + 2 omega x T q')          [2D: A(-w^2 s + 2 w perp(T q'))]
 //   h_th = omega x J omega + 2 (tr(C_up) omega - C_up^T omega),  C_up = sum_k q'_k C_u_psik
 //                                                           [2D: 2 w tr C_up]
-//   h_q,k = omega^T C_u_psik omega - |omega|^2 tr C_u_psik + 2 omega . sum_l q'_l axial C(psi_l, psi_k)
+//   h_q,k = omega^T C_u_psik omega - |omega|^2 tr C_u_psik + 2 omega . sum_l q'_l axial C(psi_l,
+//   psi_k)
 //                                                           [2D: -w^2 tr C_u_psik + 2 w (...)]
 // (sum Ms_ij u_i x (omega x (omega x u_j)) = -omega x (C_uu omega) = omega x J omega because
 // C_uu is symmetric; sum Ms_ij psi_k,i . (omega x psi_l,j) = omega . axial C(psi_l, psi_k).)
@@ -55,8 +56,8 @@ FloatingFrameBody<dim>::FloatingFrameBody(const ReducedBodyData& data,
 {
   const std::string where = "reduced body (" + data.mesh_file + ")";
   if (data.dim != dim)
-    throw InputError(where, "dimension " + std::to_string(data.dim) + ", expected " +
-                                std::to_string(dim));
+    throw InputError(where,
+                     "dimension " + std::to_string(data.dim) + ", expected " + std::to_string(dim));
   const int n = data.n_nodes();
   const int m_file = data.n_modes();
   n_modes_ = options.n_modes < 0 ? m_file : std::min(options.n_modes, m_file);
@@ -146,6 +147,7 @@ FloatingFrameBody<dim>::FloatingFrameBody(const ReducedBodyData& data,
   tmp_rm_.resize(rdim * m);
   tmp_dd_.resize(d2);
   skin_u_.resize(dim * ns);
+  skin_w_.resize(dim * ns);
 }
 
 template <int dim>
@@ -190,6 +192,7 @@ void FloatingFrameBody<dim>::set_modal_state(const Eigen::VectorXd& q, const Eig
 {
   q_ = q;
   v_.tail(n_modes_) = q_dot;
+  deformation_terms_valid_ = false;
 }
 
 template <int dim>
@@ -251,25 +254,45 @@ const std::vector<int>& FloatingFrameBody<dim>::node_set(const std::string& name
 }
 
 template <int dim>
+template <class Ref, class Psi>
+void FloatingFrameBody<dim>::precompute_loads(const Ref& x_ref, const Psi& psi,
+                                              const std::vector<Vector>& forces)
+{
+  const int n = static_cast<int>(forces.size());
+  const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, dim, Eigen::RowMajor>> f(
+      forces.empty() ? nullptr : forces[0].data(), n, dim);
+  node_force_sum_ = f.colwise().sum().transpose();
+  node_force_xf_.noalias() = x_ref.transpose() * f;
+  // vec(G_k)[a + dim b] = sum_i psi(dim i + a, k) f_i[b]: for each component a a small
+  // product F^T P_a with P_a the rows dim i + a of psi (a strided view, no copy)
+  using Strided =
+      Eigen::Map<const Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>>;
+  for (int a = 0; a < dim; ++a)
+  {
+    const Strided p_a(psi.data() + a, n, n_modes_,
+                      Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(psi.outerStride(), dim));
+    const Eigen::MatrixXd g = f.transpose() * p_a; // dim x m, row b
+    for (int b = 0; b < dim; ++b)
+      node_force_gf_.row(a + dim * b) = g.row(b);
+  }
+}
+
+template <int dim>
 void FloatingFrameBody<dim>::set_node_forces(const std::vector<int>& nodes,
                                              const std::vector<Vector>& forces)
 {
   if (nodes.size() != forces.size())
     throw InputError("FloatingFrameBody::set_node_forces", "one force per node expected");
-  node_force_sum_.setZero();
-  node_force_xf_.setZero();
-  node_force_gf_.setZero();
-  for (std::size_t i = 0; i < nodes.size(); ++i)
+  const int n = static_cast<int>(nodes.size());
+  Eigen::MatrixXd x(n, dim), psi(dim * n, n_modes_);
+  for (int i = 0; i < n; ++i)
   {
-    const int id = nodes[i];
-    const Vector& f = forces[i];
-    node_force_sum_ += f;
-    node_force_xf_ += x_ref_.row(id).transpose() * f.transpose();
-    // vec(G_k)[a + dim b] += psi_k,i[a] f[b]
-    for (int b = 0; b < dim; ++b)
-      for (int a = 0; a < dim; ++a)
-        node_force_gf_.row(a + dim * b) += f[b] * psi_.row(dim * id + a);
+    if (nodes[i] < 0 || nodes[i] >= n_nodes())
+      throw InputError("FloatingFrameBody::set_node_forces", "node id out of range");
+    x.row(i) = x_ref_.row(nodes[i]);
+    psi.middleRows(dim * i, dim) = psi_.middleRows(dim * nodes[i], dim);
   }
+  precompute_loads(x, psi, forces);
 }
 
 template <int dim>
@@ -292,33 +315,40 @@ void FloatingFrameBody<dim>::skin_positions(std::vector<Vector>& x) const
 template <int dim>
 void FloatingFrameBody<dim>::skin_velocities(std::vector<Vector>& v) const
 {
+  // x' = R' + A (omega x u + Psi q'), u = xbar + Psi q
   v.resize(skin_nodes_.size());
   tmp_m_ = v_.tail(n_modes_);
-  Eigen::VectorXd& w = skin_u_; // reused: first the elastic velocities Psi q'
-  w.noalias() = skin_psi_ * tmp_m_;
+  skin_w_.noalias() = skin_psi_ * tmp_m_;
   if (clamped_)
   {
     for (std::size_t s = 0; s < v.size(); ++s)
-      v[s] = rotation_ * w.template segment<dim>(dim * s);
+      v[s] = rotation_ * skin_w_.template segment<dim>(dim * s);
     return;
   }
+  skin_u_.noalias() = skin_psi_ * q_;
+  skin_u_ += skin_ref_;
+  const Vector r_dot = v_.template head<dim>();
   for (std::size_t s = 0; s < v.size(); ++s)
   {
-    const Vector u =
-      skin_ref_.template segment<dim>(dim * s) + skin_psi_.middleRows(dim * s, dim) * q_;
-    Vector ws = w.template segment<dim>(dim * s);
+    const Vector u = skin_u_.template segment<dim>(dim * s);
+    Vector w = skin_w_.template segment<dim>(dim * s);
     if constexpr (dim == 2)
-      ws += v_(2) * perp(u);
+      w += v_(2) * perp(u);
     else
-      ws += Eigen::Vector3d(v_.template segment<3>(3)).cross(u);
-    v[s] = v_.template head<dim>() + rotation_ * ws;
+      w += Eigen::Vector3d(v_.template segment<3>(3)).cross(u);
+    v[s] = r_dot + rotation_ * w;
   }
 }
 
 template <int dim>
 void FloatingFrameBody<dim>::set_skin_forces(const std::vector<Vector>& f)
 {
-  set_node_forces(skin_nodes_, f);
+  if (f.size() != skin_nodes_.size())
+    throw InputError("FloatingFrameBody::set_skin_forces", "one force per skin node expected");
+  // skin rows kept contiguous: no gathering, no allocation but the small product
+  const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, dim, Eigen::RowMajor>> x(
+      skin_ref_.data(), static_cast<int>(skin_nodes_.size()), dim);
+  precompute_loads(x, skin_psi_, f);
 }
 
 template <int dim>
@@ -334,6 +364,7 @@ template <int dim>
 void FloatingFrameBody<dim>::set_from_base(const Eigen::Ref<const Eigen::VectorXd>& increment)
 {
   q_ = base_q_ + increment.tail(n_modes_);
+  deformation_terms_valid_ = false;
   if (clamped_)
     return;
   position_ = base_position_ + increment.template head<dim>();
@@ -344,7 +375,8 @@ void FloatingFrameBody<dim>::set_from_base(const Eigen::Ref<const Eigen::VectorX
   }
   else
   {
-    quaternion_ = (base_quaternion_ * quaternion_exp(increment.template segment<3>(3))).normalized();
+    quaternion_ =
+        (base_quaternion_ * quaternion_exp(increment.template segment<3>(3))).normalized();
     rotation_ = quaternion_.toRotationMatrix();
   }
 }
@@ -352,6 +384,9 @@ void FloatingFrameBody<dim>::set_from_base(const Eigen::Ref<const Eigen::VectorX
 template <int dim>
 void FloatingFrameBody<dim>::update_deformation_terms() const
 {
+  if (deformation_terms_valid_)
+    return;
+  deformation_terms_valid_ = true;
   constexpr int d2 = dim * dim;
   const int m = n_modes_;
   s_ = s0_ + t_ * q_;
@@ -389,7 +424,8 @@ void FloatingFrameBody<dim>::mass_matrix(Eigen::Ref<Eigen::MatrixXd> mm) const
   mm.block(0, f, dim, m).noalias() = rotation_ * t_;
   for (int k = 0; k < m; ++k)
   {
-    const Eigen::Matrix<double, rdim, 1> ax(axial(Mat<dim>(as_matrix<dim>(c_upsi_.data() + d2 * k))));
+    const Eigen::Matrix<double, rdim, 1> ax(
+        axial(Mat<dim>(as_matrix<dim>(c_upsi_.data() + d2 * k))));
     for (int r = 0; r < rdim; ++r) // element-wise: GCC 12 warns on a vectorised 1..3 copy
       mm(dim + r, f + k) = ax(r);
   }
@@ -426,7 +462,7 @@ void FloatingFrameBody<dim>::forces(const Vector& gravity, Eigen::Ref<Eigen::Vec
   const Matrix load_moment = (node_force_xf_ + as_matrix<dim>(vec_gq.data())) * rotation_;
   tmp_rm_.noalias() = gyro_ * qd; // block k: sum_l q'_l axial C(psi_l, psi_k)
   const Eigen::Map<const Eigen::Matrix<double, rdim, Eigen::Dynamic>> gyro_q(tmp_rm_.data(), rdim,
-                                                                            m);
+                                                                             m);
   if constexpr (dim == 2)
   {
     const double w = v_(2);
@@ -444,8 +480,7 @@ void FloatingFrameBody<dim>::forces(const Vector& gravity, Eigen::Ref<Eigen::Vec
     out.template head<3>() = node_force_sum_ + mass_ * gravity + frame_force_ -
                              rotation_ * (w.cross(w.cross(s_)) + 2 * w.cross(tqd));
     out.template segment<3>(3) = axial(load_moment) + s_.cross(g_body) + at * frame_moment_ -
-                                 w.cross(j * w) -
-                                 2 * (c_up.trace() * w - c_up.transpose() * w);
+                                 w.cross(j * w) - 2 * (c_up.trace() * w - c_up.transpose() * w);
     const Matrix ww = w * w.transpose() - w.squaredNorm() * Matrix::Identity();
     const Eigen::Map<const Eigen::Matrix<double, d2, 1>> vec_ww(ww.data());
     fq.noalias() -= cu.transpose() * vec_ww;
@@ -468,12 +503,13 @@ void FloatingFrameBody<dim>::applied_frame_load(const Vector& gravity, Vector& f
     moment(0) = cross(position_, force) + axial(load_moment) + cross(s_, Vector(at * gravity)) +
                 frame_moment_(0);
   else
-    moment = position_.cross(force) +
-             rotation_ * (axial(load_moment) + s_.cross(at * gravity)) + frame_moment_;
+    moment = position_.cross(force) + rotation_ * (axial(load_moment) + s_.cross(at * gravity)) +
+             frame_moment_;
 }
 
 template <int dim>
-void FloatingFrameBody<dim>::add_tangent(double c_k, double c_d, Eigen::Ref<Eigen::MatrixXd> s) const
+void FloatingFrameBody<dim>::add_tangent(double c_k, double c_d,
+                                         Eigen::Ref<Eigen::MatrixXd> s) const
 {
   const int m = n_modes_;
   s.bottomRightCorner(m, m) += c_k * k_red_ + c_d * d_red_;
@@ -522,6 +558,7 @@ const double* FloatingFrameBody<dim>::restore_state(const double* in)
   }
   q_ = Eigen::Map<const Eigen::VectorXd>(in, n_modes_);
   in += n_modes_;
+  deformation_terms_valid_ = false;
   v_ = Eigen::Map<const Eigen::VectorXd>(in, v_.size());
   return in + v_.size();
 }

@@ -28,7 +28,6 @@
 #include "mbs/skin_body.h"
 
 #include <Eigen/Dense>
-
 #include <map>
 #include <string>
 #include <vector>
@@ -47,9 +46,9 @@ struct FloatingFrameOptions
 {
   int n_modes = -1; ///< use the first n modes of the file; negative: all
   DampingKind damping = DampingKind::none;
-  double rayleigh_mass = 0;        ///< alpha, 1/s
-  double rayleigh_stiffness = 0;   ///< beta, s
-  double modal_damping_ratio = 0;  ///< zeta, same for every mode
+  double rayleigh_mass = 0;       ///< alpha, 1/s
+  double rayleigh_stiffness = 0;  ///< beta, s
+  double modal_damping_ratio = 0; ///< zeta, same for every mode
 };
 
 template <int dim>
@@ -152,6 +151,10 @@ public:
 
 private:
   void update_deformation_terms() const;
+  /// Precomputes the load sums of world forces f on nodes with reference coordinates
+  /// x_ref (n x dim) and mode rows psi (dim n x m, row = node * dim + component).
+  template <class Ref, class Psi>
+  void precompute_loads(const Ref& x_ref, const Psi& psi, const std::vector<Vector>& f);
 
   // constant data
   Eigen::MatrixXd x_ref_; ///< n x dim
@@ -163,12 +166,12 @@ private:
   Eigen::MatrixXd skin_psi_; ///< dim n_s x m
   int n_modes_ = 0;
   double mass_ = 0;
-  Vector s0_;                ///< m * centre of mass = sum_ij Ms_ij xbar_j
-  Eigen::MatrixXd t_;        ///< dim x m, Phi_t^T M Psi
+  Vector s0_;         ///< m * centre of mass = sum_ij Ms_ij xbar_j
+  Eigen::MatrixXd t_; ///< dim x m, Phi_t^T M Psi
   Matrix c_xx_;
-  Eigen::MatrixXd c_xpsi_;   ///< dim^2 x m, column k = vec C(x, psi_k)
-  Eigen::MatrixXd c_pp_;     ///< dim^2 m x m, block row k, column l = vec C(psi_l, psi_k)
-  Eigen::MatrixXd gyro_;     ///< rdim m x m, block row k, column l = axial C(psi_l, psi_k)
+  Eigen::MatrixXd c_xpsi_; ///< dim^2 x m, column k = vec C(x, psi_k)
+  Eigen::MatrixXd c_pp_;   ///< dim^2 m x m, block row k, column l = vec C(psi_l, psi_k)
+  Eigen::MatrixXd gyro_;   ///< rdim m x m, block row k, column l = axial C(psi_l, psi_k)
   Eigen::MatrixXd m_red_, k_red_, d_red_;
 
   // state
@@ -196,6 +199,7 @@ private:
   mutable Eigen::VectorXd c_upsi_; ///< dim^2 m: vec C(u, psi_k) for all k
   mutable Vector s_;               ///< sum_ij Ms_ij u_j
   mutable Matrix c_uu_;
-  mutable Eigen::VectorXd tmp_m_, tmp_rm_, tmp_dd_, skin_u_;
+  mutable bool deformation_terms_valid_ = false; ///< false whenever q changes
+  mutable Eigen::VectorXd tmp_m_, tmp_rm_, tmp_dd_, skin_u_, skin_w_;
 };
 } // namespace chipflex::mbs

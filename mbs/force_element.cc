@@ -11,7 +11,10 @@ int angle_column(const BodyView<2>& v)
 {
   return v.body && v.body->rotation_offset() >= 0 ? v.offset + 2 : -1;
 }
-double angle(const BodyView<2>& v) { return v.body ? v.body->angle() : 0.0; }
+double angle(const BodyView<2>& v)
+{
+  return v.body ? v.body->angle() : 0.0;
+}
 double angular_velocity(const BodyView<2>& v)
 {
   return v.body ? v.body->angular_velocity()(0) : 0.0;
@@ -20,8 +23,8 @@ double angular_velocity(const BodyView<2>& v)
 
 TorsionSpring::TorsionSpring(int body_a, int body_b, double stiffness, double damping,
                              double rest_angle)
-  : ForceElement<2>(body_a, body_b), stiffness_(stiffness), damping_(damping),
-    rest_angle_(rest_angle)
+    : ForceElement<2>(body_a, body_b), stiffness_(stiffness), damping_(damping),
+      rest_angle_(rest_angle)
 {
   if (stiffness < 0 || damping < 0)
     throw InputError("torsion spring", "stiffness and damping must not be negative");
@@ -35,8 +38,8 @@ double TorsionSpring::deflection(const BodyView<2>& a, const BodyView<2>& b) con
 void TorsionSpring::add_forces(const BodyView<2>& a, const BodyView<2>& b,
                                Eigen::Ref<Eigen::VectorXd> f) const
 {
-  const double moment = stiffness_ * deflection(a, b) +
-                        damping_ * (angular_velocity(b) - angular_velocity(a));
+  const double moment =
+      stiffness_ * deflection(a, b) + damping_ * (angular_velocity(b) - angular_velocity(a));
   if (const int ca = angle_column(a); ca >= 0)
     f(ca) += moment;
   if (const int cb = angle_column(b); cb >= 0)

@@ -24,8 +24,9 @@ void dot_constraint_row(const BodyView<3>& a, const BodyView<3>& b, const Eigen:
 } // namespace
 
 template <int dim>
-void Joint<dim>::coincident_points(const BodyView<dim>& a, const Vector& p_a, const BodyView<dim>& b,
-                                   const Vector& p_b, int row, Eigen::Ref<Eigen::VectorXd> g,
+void Joint<dim>::coincident_points(const BodyView<dim>& a, const Vector& p_a,
+                                   const BodyView<dim>& b, const Vector& p_b, int row,
+                                   Eigen::Ref<Eigen::VectorXd> g,
                                    Eigen::Ref<Eigen::MatrixXd> jacobian) const
 {
   const Vector xa = a.body ? a.body->point_position(p_a) : p_a;
@@ -50,13 +51,12 @@ template <int dim>
 RevoluteJoint<dim>::RevoluteJoint(int body_a, const Vector& point_a, int body_b,
                                   const Vector& point_b, const Eigen::Vector3d& axis_a,
                                   const Eigen::Vector3d& axis_b)
-  : Joint<dim>(body_a, body_b), point_a_(point_a), point_b_(point_b),
-    axis_a_(axis_a.normalized())
+    : Joint<dim>(body_a, body_b), point_a_(point_a), point_b_(point_b), axis_a_(axis_a.normalized())
 {
   // two unit vectors normal to axis_b: n_a . e_b1 = n_a . e_b2 = 0 keeps the axes parallel
   const Eigen::Vector3d nb = axis_b.normalized();
   const Eigen::Vector3d trial =
-    std::abs(nb.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+      std::abs(nb.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
   normal_b1_ = nb.cross(trial).normalized();
   normal_b2_ = nb.cross(normal_b1_);
 }
@@ -82,8 +82,8 @@ void RevoluteJoint<dim>::evaluate(const BodyView<dim>& a, const BodyView<dim>& b
 template <int dim>
 FixedJoint<dim>::FixedJoint(int body_a, const Vector& point_a, int body_b, const Vector& point_b,
                             const Eigen::Matrix3d& relative_rotation)
-  : Joint<dim>(body_a, body_b), point_a_(point_a), point_b_(point_b),
-    relative_rotation_(relative_rotation)
+    : Joint<dim>(body_a, body_b), point_a_(point_a), point_b_(point_b),
+      relative_rotation_(relative_rotation)
 {
 }
 

@@ -35,7 +35,8 @@ public:
   int body_b() const { return body_b_; }
   virtual int n_equations() const = 0;
   /// g (n_equations) and rows of d g / d v (all system columns; the caller zeroes them).
-  virtual void evaluate(const BodyView<dim>& a, const BodyView<dim>& b, Eigen::Ref<Eigen::VectorXd> g,
+  virtual void evaluate(const BodyView<dim>& a, const BodyView<dim>& b,
+                        Eigen::Ref<Eigen::VectorXd> g,
                         Eigen::Ref<Eigen::MatrixXd> jacobian) const = 0;
 
 protected:

@@ -162,8 +162,7 @@ void MultibodySystem<dim>::factorize_kkt(double c_k, double c_d, bool with_tange
       bodies_[i]->add_tangent(c_k, c_d, kkt_.block(offsets_[i], offsets_[i], n, n));
     }
     for (const auto& e : elements_)
-      e->add_tangent(view(e->body_a()), view(e->body_b()), c_k, c_d,
-                     kkt_.topLeftCorner(nv_, nv_));
+      e->add_tangent(view(e->body_a()), view(e->body_b()), c_k, c_d, kkt_.topLeftCorner(nv_, nv_));
   }
   kkt_.topRightCorner(nv_, nc_) = g_jac_.transpose();
   kkt_.bottomLeftCorner(nc_, nv_) = g_jac_;
@@ -232,7 +231,8 @@ void MultibodySystem<dim>::step_generalized_alpha(double h)
   }
   a1_ = a_;
   const bool refactor = !linear_ || factored_h_ != h;
-  auto update_kinematics = [&]() {
+  auto update_kinematics = [&]()
+  {
     abar1_ = ((1 - af) * a1_ + af * a_ - am * abar_) / (1 - am);
     v1_ = vn_ + h * ((1 - gamma) * abar_ + gamma * abar1_);
     incr_ = h * vn_ + (h * h * (0.5 - beta)) * abar_ + (h * h * beta) * abar1_;
@@ -328,8 +328,7 @@ void MultibodySystem<dim>::momenta(Eigen::VectorXd& out)
       continue;
     const int o = offsets_[i], n = b.n_velocities();
     constexpr int r = rotation_dofs<dim>;
-    const Eigen::Matrix<double, dim + r, 1> mv =
-      m_.block(o, o, dim + r, n) * b.velocities();
+    const Eigen::Matrix<double, dim + r, 1> mv = m_.block(o, o, dim + r, n) * b.velocities();
     const Vector p = mv.template head<dim>();
     out.template segment<dim>(o) = p;
     if constexpr (dim == 2)
@@ -340,7 +339,8 @@ void MultibodySystem<dim>::momenta(Eigen::VectorXd& out)
 }
 
 template <int dim>
-void MultibodySystem<dim>::midpoint_residual(double h, const Eigen::VectorXd& v1, Eigen::VectorXd& r)
+void MultibodySystem<dim>::midpoint_residual(double h, const Eigen::VectorXd& v1,
+                                             Eigen::VectorXd& r)
 {
   constexpr int rd = rotation_dofs<dim>;
   incr_ = (0.5 * h) * (vn_ + v1);
@@ -366,7 +366,7 @@ void MultibodySystem<dim>::midpoint_residual(double h, const Eigen::VectorXd& v1
   for (int i = 0; i < n_bodies(); ++i)
     if (!bodies_[i]->clamped_to_ground())
       r.segment(offsets_[i], dim + rd) +=
-        (mom1_.segment(offsets_[i], dim + rd) - mom0_.segment(offsets_[i], dim + rd)) / h;
+          (mom1_.segment(offsets_[i], dim + rd) - mom0_.segment(offsets_[i], dim + rd)) / h;
 }
 
 template <int dim>
@@ -405,8 +405,8 @@ void MultibodySystem<dim>::step_momentum_midpoint(double h)
   for (;; ++it)
   {
     if (it == options_.max_newton_iterations)
-      throw SimulationError("mbs: midpoint Newton did not converge at t = " +
-                            std::to_string(time_) + " s");
+      throw SimulationError(
+          "mbs: midpoint Newton did not converge at t = " + std::to_string(time_) + " s");
     if (it > 0)
       midpoint_residual(h, v1_, res_);
     sol_ = lu_.solve(res_);
@@ -486,8 +486,8 @@ void MultibodySystem<dim>::restore_state(const std::vector<double>& s)
   const std::size_t expected = 4 + probe.size() + 2 * nv_ + nc_;
   if (s.size() != expected || static_cast<int>(s[0]) != nv_ || static_cast<int>(s[1]) != nc_)
     throw InputError("multibody checkpoint", "state of " + std::to_string(s.size()) +
-                                               " values does not fit this system (" +
-                                               std::to_string(expected) + ")");
+                                                 " values does not fit this system (" +
+                                                 std::to_string(expected) + ")");
   time_ = s[2];
   initialized_ = s[3] != 0;
   const double* p = s.data() + 4;

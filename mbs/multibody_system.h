@@ -33,7 +33,6 @@
 #include "mbs/joint.h"
 
 #include <Eigen/Dense>
-
 #include <memory>
 #include <vector>
 
@@ -48,7 +47,7 @@ struct IntegratorOptions
     momentum_midpoint
   };
   Scheme scheme = Scheme::generalized_alpha;
-  double rho_infinity = 0.9; ///< spectral radius at infinite frequency, 0..1
+  double rho_infinity = 0.9;       ///< spectral radius at infinite frequency, 0..1
   double newton_tolerance = 1e-10; ///< on the acceleration correction, relative
   int max_newton_iterations = 50;
 };

@@ -55,11 +55,10 @@ ReducedBodyData rectangular_link_data(double length, double thickness, double de
   inertia(2, 2) = mass * (length * length + thickness * thickness) / 12.0;
   const double h = 0.5 * thickness;
   // counter-clockwise outline: outward normals (dy, -dx)
-  const std::vector<Eigen::Vector2d> nodes = {
-    {-h, -length}, {h, -length}, {h, 0.0}, {-h, 0.0}};
+  const std::vector<Eigen::Vector2d> nodes = {{-h, -length}, {h, -length}, {h, 0.0}, {-h, 0.0}};
   const std::vector<std::array<int, 2>> faces = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
   ReducedBodyData d =
-    rigid_body_data<2>(mass, Eigen::Vector2d(0.0, -0.5 * length), inertia, nodes, faces);
+      rigid_body_data<2>(mass, Eigen::Vector2d(0.0, -0.5 * length), inertia, nodes, faces);
   d.node_sets["tip"] = {0, 1};
   d.node_sets["clamp"] = {2, 3};
   return d;

@@ -20,7 +20,7 @@ RigidChainGate RigidChainGate::seed_table2(int n_links)
     break;
   default:
     throw InputError("rigid chain gate", "the seed paper's Table 2 has 1, 2 or 3 links, not " +
-                                           std::to_string(n_links));
+                                             std::to_string(n_links));
   }
   return g;
 }
@@ -45,11 +45,11 @@ RigidChain add_rigid_chain(MultibodySystem<2>& system, const RigidChainGate& gat
     const int b = system.add_body(std::move(body));
     const int above = i == 0 ? Joint<2>::ground : chain.links.back();
     const Eigen::Vector2d hinge_above =
-      i == 0 ? gate.clamp_point : Eigen::Vector2d(0.0, -l); // ground: world point
+        i == 0 ? gate.clamp_point : Eigen::Vector2d(0.0, -l); // ground: world point
     chain.joints.push_back(system.add_joint(
-      std::make_unique<RevoluteJoint<2>>(above, hinge_above, b, Eigen::Vector2d::Zero())));
+        std::make_unique<RevoluteJoint<2>>(above, hinge_above, b, Eigen::Vector2d::Zero())));
     chain.springs.push_back(system.add_force_element(
-      std::make_unique<TorsionSpring>(above, b, gate.spring_rate, gate.spring_damping)));
+        std::make_unique<TorsionSpring>(above, b, gate.spring_rate, gate.spring_damping)));
     chain.links.push_back(b);
   }
   return chain;

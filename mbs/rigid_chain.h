@@ -6,7 +6,6 @@
 #include "mbs/multibody_system.h"
 
 #include <Eigen/Dense>
-
 #include <vector>
 
 namespace chipflex::mbs
@@ -14,11 +13,11 @@ namespace chipflex::mbs
 struct RigidChainGate
 {
   int n_links = 1;
-  double total_length = 0.079;   ///< m, clamp to free end
-  double thickness = 0.005;      ///< m
-  double density = 1100;         ///< kg/m^3 (rubber)
-  double spring_rate = 3.95;     ///< Nm/rad per metre of depth, at every joint
-  double spring_damping = 0;     ///< Nms/rad per metre of depth
+  double total_length = 0.079; ///< m, clamp to free end
+  double thickness = 0.005;    ///< m
+  double density = 1100;       ///< kg/m^3 (rubber)
+  double spring_rate = 3.95;   ///< Nm/rad per metre of depth, at every joint
+  double spring_damping = 0;   ///< Nms/rad per metre of depth
   Eigen::Vector2d clamp_point = Eigen::Vector2d::Zero(); ///< top hinge in the world
 
   /// Table 2 of the seed paper: 1 link 79 mm 3.95 Nm; 2 links 39.5 mm 3.95 Nm;

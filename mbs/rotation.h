@@ -16,7 +16,10 @@ constexpr int rotation_dofs = dim == 2 ? 1 : 3;
 /// The axial part of a mass-weighted outer product C(a, b) = sum_ij Ms_ij a_i b_j^T:
 /// sum_ij Ms_ij a_i x b_j = eps : C(a, b). 2D: the scalar C01 - C10; 3D: the vector
 /// (C12 - C21, C20 - C02, C01 - C10).
-inline double axial(const Eigen::Matrix2d& c) { return c(0, 1) - c(1, 0); }
+inline double axial(const Eigen::Matrix2d& c)
+{
+  return c(0, 1) - c(1, 0);
+}
 inline Eigen::Vector3d axial(const Eigen::Matrix3d& c)
 {
   return {c(1, 2) - c(2, 1), c(2, 0) - c(0, 2), c(0, 1) - c(1, 0)};
@@ -31,7 +34,10 @@ inline Eigen::Matrix3d skew(const Eigen::Vector3d& a)
 }
 
 /// The 2D perpendicular: perp(a) = (-a_y, a_x) = e_z x a.
-inline Eigen::Vector2d perp(const Eigen::Vector2d& a) { return {-a.y(), a.x()}; }
+inline Eigen::Vector2d perp(const Eigen::Vector2d& a)
+{
+  return {-a.y(), a.x()};
+}
 
 /// 2D cross product (a scalar) and its 3D counterpart, so code can be written once.
 inline double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b)

@@ -4,7 +4,6 @@
 // on those nodes. Bodies implement this; coupling/ never needs to know the body kind.
 
 #include <Eigen/Core>
-
 #include <array>
 #include <vector>
 

@@ -268,7 +268,7 @@ void FluidSolver<dim>::update_verlet(double dt)
   // from the current state decouples the odd and even step sequences (DualSPHysics).
   const float dtv = float(euler ? dt : 2 * dt);
   const float rho0 = float(parameters_.reference_density);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
     const float base_rho = euler ? p.density[i] : p.density_previous[i];
@@ -297,7 +297,7 @@ void FluidSolver<dim>::predict_symplectic(double dt)
   auto& p = particles_;
   const std::size_t nb = p.n_boundary, n = p.size();
   const float half = float(0.5 * dt), rho0 = float(parameters_.reference_density);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
     p.density_previous[i] = p.density[i];
@@ -327,7 +327,7 @@ void FluidSolver<dim>::correct_symplectic(double dt)
   auto& p = particles_;
   const std::size_t nb = p.n_boundary, n = p.size();
   const float rho0 = float(parameters_.reference_density);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
     const double eps = -double(p.density_rate[i]) / double(p.density[i]) * dt;

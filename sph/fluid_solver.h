@@ -87,6 +87,10 @@ public:
   /// boundary particles (attached to the nearest faces) instead of generated layers.
   int add_wall(const WallSurface<dim>& wall, const std::vector<Vector>& dummy_positions = {});
   void add_hook(HookPoint point, Hook hook);
+  /// Ends the set-up: builds the particle arrays (boundary block first). Called by the
+  /// first step(), save() or load(); call it yourself before reading particles of a
+  /// solver that has not stepped yet. Idempotent.
+  void initialise() { finish_setup(); }
 
   // --- stepping ---------------------------------------------------------------------------
   /// Advances one time step; returns dt.

@@ -64,7 +64,7 @@ void FluidSolver<dim>::sort_and_bin()
   const std::size_t nb = p.n_boundary, n = p.size();
   const std::size_t first = boundary_moved_ ? 0 : nb;
   std::size_t bad = n;
-#pragma omp parallel for schedule(static) reduction(min : bad)
+#pragma omp parallel for schedule(static) reduction(min : bad) if (n > light_parallel_threshold)
   for (std::size_t i = first; i < n; ++i)
   {
     double x[dim];
@@ -122,7 +122,7 @@ void FluidSolver<dim>::force_pass()
   auto& im = *impl_;
   const std::size_t nb = p.n_boundary, n = p.size();
   const float mass = float(mass_);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
     const float rho = p.density[i];
@@ -172,7 +172,7 @@ void FluidSolver<dim>::force_pass()
   for (int d = 0; d < dim; ++d)
     g[d] = float(parameters_.gravity[d]);
   float a2_max = 0;
-#pragma omp parallel for schedule(static) reduction(max : a2_max)
+#pragma omp parallel for schedule(static) reduction(max : a2_max) if (n > light_parallel_threshold)
   for (std::size_t i = nb; i < n; ++i)
   {
     float a2 = 0;

@@ -14,6 +14,7 @@
 
 #include "sph/density_diffusion.h"
 #include "sph/neighbour_grid.h"
+#include "sph/particle_arrays.h"
 
 #include <algorithm>
 #include <cmath>
@@ -123,7 +124,7 @@ float particle_pass(const ForcePassInput<dim>& in, const Viscosity& visc, const 
                     std::size_t first, std::size_t last)
 {
   float dot_rr2_max = 0;
-#pragma omp parallel for schedule(static) reduction(max : dot_rr2_max)
+#pragma omp parallel for schedule(static) reduction(max : dot_rr2_max) if (last - first > parallel_threshold)
   for (std::size_t i = first; i < last; ++i)
   {
     double xi[3] = {in.x[0][i], in.x[1][i], dim == 3 ? in.x[dim - 1][i] : 0.0};

@@ -76,7 +76,7 @@ void LennardJonesWalls<dim>::apply(ParticleArrays<dim>& p, std::size_t first, st
   if (faces_.empty())
     return;
   std::vector<std::vector<Contribution>> per_thread(omp_get_max_threads());
-#pragma omp parallel
+#pragma omp parallel if (last - first > parallel_threshold)
   {
     auto& mine = per_thread[omp_get_thread_num()];
     // schedule(static): thread t owns one contiguous, ascending particle block, so

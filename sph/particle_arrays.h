@@ -16,6 +16,12 @@
 
 namespace chipflex::sph
 {
+/// Below these particle counts a loop runs on one thread: the OpenMP fork and barrier
+/// cost more than the work, and on a loaded machine a barrier can stall for a whole
+/// scheduler slice. The force loop is heavy (~1 us per particle), the others light.
+inline constexpr std::size_t parallel_threshold = 2000;
+inline constexpr std::size_t light_parallel_threshold = 16000;
+
 template <int dim>
 struct ParticleArrays
 {
@@ -106,7 +112,7 @@ private:
     T* tmp = reinterpret_cast<T*>(scratch.data());
     const std::size_t n = permutation.size();
     T* base = a.data() + first;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
     for (std::size_t k = 0; k < n; ++k)
       tmp[k] = base[permutation[k]];
     std::memcpy(base, tmp, n * sizeof(T));

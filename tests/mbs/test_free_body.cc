@@ -5,7 +5,6 @@
 #include "truss_beam.h"
 
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 using namespace chipflex;
@@ -93,8 +92,8 @@ TEST_CASE("Flexible beam spun up about a hinge: the tip lags by the quasi-static
   fo.modal_damping_ratio = 0.05;
   const int id = system.add_body(std::make_unique<FloatingFrameBody<2>>(beam.body, fo));
   auto& body = system.body(id);
-  system.add_joint(std::make_unique<RevoluteJoint<2>>(Joint<2>::ground, Eigen::Vector2d::Zero(),
-                                                      id, Eigen::Vector2d::Zero()));
+  system.add_joint(std::make_unique<RevoluteJoint<2>>(Joint<2>::ground, Eigen::Vector2d::Zero(), id,
+                                                      Eigen::Vector2d::Zero()));
   const int m = body.n_modes();
   Eigen::MatrixXd mm(3 + m, 3 + m);
   body.mass_matrix(mm);
@@ -102,9 +101,8 @@ TEST_CASE("Flexible beam spun up about a hinge: the tip lags by the quasi-static
   const double w1 = 2 * M_PI * beam.body.frequencies_hz(0);
   const double t_ramp = 20 * 2 * M_PI / w1;
   const double moment = 0.02 * j_rigid * w1 * w1 / 400; // alpha ~ w1^2/400 * 0.02 rad
-  auto torque = [&](double t) {
-    return t < t_ramp ? 0.5 * moment * (1 - std::cos(M_PI * t / t_ramp)) : moment;
-  };
+  auto torque = [&](double t)
+  { return t < t_ramp ? 0.5 * moment * (1 - std::cos(M_PI * t / t_ramp)) : moment; };
   const double h = t_ramp / 4000;
   const int tip = body.node_set("tip")[0];
   for (int s = 0; s < 4000; ++s)
@@ -116,8 +114,8 @@ TEST_CASE("Flexible beam spun up about a hinge: the tip lags by the quasi-static
   // rigid beam, same moment: theta = M/(2J) (t^2/2 - (T/pi)^2 (1 - cos(pi t/T))), t <= T
   const double t_end = std::min(system.time(), t_ramp);
   const double rigid_angle =
-    moment / (2 * j_rigid) *
-    (t_end * t_end / 2 - std::pow(t_ramp / M_PI, 2) * (1 - std::cos(M_PI * t_end / t_ramp)));
+      moment / (2 * j_rigid) *
+      (t_end * t_end / 2 - std::pow(t_ramp / M_PI, 2) * (1 - std::cos(M_PI * t_end / t_ramp)));
   // angular acceleration now (the torque is constant at the end of the ramp)
   const double w0 = body.angular_velocity()(0);
   body.set_frame_load(Eigen::Vector2d::Zero(), Eigen::Matrix<double, 1, 1>(moment));
@@ -126,20 +124,20 @@ TEST_CASE("Flexible beam spun up about a hinge: the tip lags by the quasi-static
   system.step(h);
   const double alpha = (body.angular_velocity()(0) - w0) / h;
   body.mass_matrix(mm);
-  const Eigen::VectorXd q_qs = -beam.body.stiffness_matrix.topLeftCorner(m, m).ldlt().solve(
-    mm.block(3, 2, m, 1) * alpha);
+  const Eigen::VectorXd q_qs =
+      -beam.body.stiffness_matrix.topLeftCorner(m, m).ldlt().solve(mm.block(3, 2, m, 1) * alpha);
   const Eigen::Vector2d lag_qs = beam.body.psi.middleRows(2 * tip, 2).leftCols(m) * q_qs;
   const Eigen::Vector2d lag = body.rotation().transpose() * body.node_displacement(tip);
   system.restore_state(before); // the tip angle at the end of the ramp
   const Eigen::Vector2d x_tip = body.node_position(tip), x_ref = body.reference_position(tip);
   const double tip_angle =
-    std::atan2(x_tip.y(), x_tip.x()) - std::atan2(x_ref.y(), x_ref.x()); // turned by
+      std::atan2(x_tip.y(), x_tip.x()) - std::atan2(x_ref.y(), x_ref.x()); // turned by
   WARN("spin-up: tip lag " << lag.y() * 1e3 << " mm (quasi-static " << lag_qs.y() * 1e3
-                           << " mm), omega " << w0 << " rad/s vs omega_1 " << w1
-                           << ", tip angle " << tip_angle << " rigid " << rigid_angle << ", frame " << body.angle());
-  CHECK(lag.y() < 0);                                  // the tip trails the frame
-  CHECK(std::abs(lag.y() / lag_qs.y() - 1) < 0.05);    // by the coupling load
+                           << " mm), omega " << w0 << " rad/s vs omega_1 " << w1 << ", tip angle "
+                           << tip_angle << " rigid " << rigid_angle << ", frame " << body.angle());
+  CHECK(lag.y() < 0);                               // the tip trails the frame
+  CHECK(std::abs(lag.y() / lag_qs.y() - 1) < 0.05); // by the coupling load
   CHECK(tip_angle < frame_angle);
-  CHECK(tip_angle < rigid_angle);                      // and the rigid beam
+  CHECK(tip_angle < rigid_angle); // and the rigid beam
   CHECK(system.constraint_violation() < 1e-12);
 }

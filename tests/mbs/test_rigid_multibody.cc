@@ -7,7 +7,6 @@
 #include "mbs/rigid_chain.h"
 
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 using namespace chipflex;
@@ -72,7 +71,7 @@ TEST_CASE("Planar pendulum period matches the exact elliptic-integral value", "[
   {
     double ref = 0;
     const double period =
-      planar_pendulum_period(theta0, IntegratorOptions::Scheme::generalized_alpha, 2000, ref);
+        planar_pendulum_period(theta0, IntegratorOptions::Scheme::generalized_alpha, 2000, ref);
     INFO("theta0 " << theta0 << " period " << period << " exact " << ref);
     CHECK(std::abs(period / ref - 1) < 2e-6);
   }
@@ -82,7 +81,7 @@ TEST_CASE("Planar pendulum with the explicit scheme and constraint projection", 
 {
   double ref = 0;
   const double period =
-    planar_pendulum_period(0.5, IntegratorOptions::Scheme::symplectic_euler, 5000, ref);
+      planar_pendulum_period(0.5, IntegratorOptions::Scheme::symplectic_euler, 5000, ref);
   INFO("period " << period << " exact " << ref);
   CHECK(std::abs(period / ref - 1) < 1e-4);
 }
@@ -107,12 +106,13 @@ TEST_CASE("Spatial pendulum (quaternion body, 3D revolute joint) has the exact p
   system.body(id).set_pose(Eigen::Vector3d::Zero(),
                            Eigen::AngleAxisd(theta0, Eigen::Vector3d::UnitX()).toRotationMatrix());
   system.add_joint(std::make_unique<RevoluteJoint<3>>(
-    Joint<3>::ground, Eigen::Vector3d::Zero(), id, Eigen::Vector3d::Zero(),
-    Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitX()));
+      Joint<3>::ground, Eigen::Vector3d::Zero(), id, Eigen::Vector3d::Zero(),
+      Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitX()));
   const double ref = exact_period(inertia(0, 0) + m * l * l / 4, m, l / 2, theta0);
   const double h = ref / 2000;
   std::vector<double> crossings;
-  auto angle = [&] {
+  auto angle = [&]
+  {
     const Eigen::Matrix3d r = system.body(id).rotation();
     return std::atan2(r(2, 1), r(1, 1)); // rotation about x
   };

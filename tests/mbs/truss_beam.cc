@@ -1,7 +1,6 @@
 #include "truss_beam.h"
 
 #include <Eigen/Eigenvalues>
-
 #include <vector>
 
 namespace chipflex::mbs::test

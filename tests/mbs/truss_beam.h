@@ -14,14 +14,14 @@ namespace chipflex::mbs::test
 struct TrussBeamSpec
 {
   int dim = 2;
-  int n_cells = 12;          ///< along x
-  double length = 0.079;     ///< m
-  double height = 0.005;     ///< m, in y
-  double depth = 0.005;      ///< m, in z (3D)
-  double density = 1100;     ///< kg/m^3
+  int n_cells = 12;           ///< along x
+  double length = 0.079;      ///< m
+  double height = 0.005;      ///< m, in y
+  double depth = 0.005;       ///< m, in z (3D)
+  double density = 1100;      ///< kg/m^3
   double bar_stiffness = 2e5; ///< EA of every bar, N
-  bool clamped = true;       ///< modes with the x = 0 nodes fixed; else free-free
-  int n_modes = 6;           ///< kept (negative: all)
+  bool clamped = true;        ///< modes with the x = 0 nodes fixed; else free-free
+  int n_modes = 6;            ///< kept (negative: all)
 };
 
 /// The reduced body, plus the full matrices for reference solutions.

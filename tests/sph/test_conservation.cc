@@ -33,13 +33,11 @@ Vector wall_force(const FluidSolver<2>& f)
   return s;
 }
 
-std::vector<Vector> swirl(const CaseDescription<2>& c, double dp)
+std::vector<Vector> swirl(const std::vector<Vector>& x)
 {
   std::vector<Vector> v;
-  const auto& b = c.fluid_blocks[0];
-  for (double x = b.min[0] + dp / 2; x < b.max[0]; x += dp)
-    for (double y = b.min[1] + dp / 2; y < b.max[1]; y += dp)
-      v.push_back(Vector(0.6 + std::sin(20 * y), 0.3 * std::cos(15 * x)));
+  for (const auto& p : x)
+    v.push_back(Vector(0.6 + std::sin(20 * p[1]), 0.3 * std::cos(15 * p[0])));
   return v;
 }
 } // namespace
@@ -57,7 +55,8 @@ TEST_CASE("a free blob without gravity keeps its momentum", "[sph][conservation]
   for (double px = dp / 2; px < 0.3; px += dp)
     for (double py = dp / 2; py < 0.2; py += dp)
       x.push_back(Vector(px, py));
-  fluid.add_fluid_particles(x, {}, swirl(c, dp));
+  fluid.add_fluid_particles(x, {}, swirl(x));
+  fluid.initialise();
   const Vector p0 = fluid_momentum(fluid);
   for (int s = 0; s < 300; ++s)
     fluid.step();
@@ -75,13 +74,15 @@ TEST_CASE("closed box without gravity: fluid momentum plus wall impulse is conse
   c.fluid.domain_min = Vector(-1, -1);
   c.fluid.domain_max = Vector(1, 1);
   auto built = build_fluid(c);
+  built->initialise();
   // Same case, particles with a swirl.
   FluidSolver<2> f(c.fluid);
   f.add_wall(built->wall(0));
   std::vector<Vector> x;
   for (std::size_t i = 0; i < built->n_particles(); ++i)
     x.push_back(built->position(i));
-  f.add_fluid_particles(x, {}, swirl(c, dp));
+  f.add_fluid_particles(x, {}, swirl(x));
+  f.initialise();
   const Vector p0 = fluid_momentum(f);
   Vector impulse = Vector::Zero();
   double largest_impulse = 0;
@@ -109,6 +110,7 @@ TEST_CASE("moving wall reactions balance the fluid's momentum change", "[sph][co
       c.fluid.gravity = Vector(0, -9.81);
       c.fluid.speed_of_sound = 25;
       auto fluid = build_fluid(c);
+      fluid->initialise();
       // A vertical piston right of the fluid, normal pointing left (-x), moving left.
       WallSurface<2> piston;
       piston.name = "piston";

@@ -1,6 +1,6 @@
 // Wendland C2 kernel: normalisation (integral of W = 1, analytic property of the kernel),
 // the discrete partition of unity and gradient consistency on a lattice
-// (sum_j V_j (x_j - x_i) grad_i W_ij = -I for a full support), and the gradient against
+// (sum_j V_j (x_j - x_i) grad_i W_ij = I for a full support), and the gradient against
 // a finite difference of W.
 
 #include "sph/wendland_kernel.h"
@@ -59,7 +59,7 @@ TEST_CASE("lattice sums: partition of unity and gradient consistency", "[sph][ke
       m[1][1] += dp * dp * y * f * y;
     }
   CHECK(sum == Approx(1).epsilon(0.01));
-  CHECK(m[0][0] == Approx(-1).epsilon(0.01));
-  CHECK(m[1][1] == Approx(-1).epsilon(0.01));
+  CHECK(m[0][0] == Approx(1).epsilon(0.01));
+  CHECK(m[1][1] == Approx(1).epsilon(0.01));
   CHECK(std::abs(m[0][1]) < 1e-12);
 }

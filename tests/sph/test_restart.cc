@@ -82,7 +82,15 @@ TEST_CASE("results do not depend on the thread count", "[sph][threads]")
   const int threads = omp_get_max_threads();
   auto run = [](int n) {
     omp_set_num_threads(n);
-    auto c = sloshing_case(TimeScheme::verlet);
+    // Enough particles for the parallel loops (sph::parallel_threshold), and a
+    // Lennard-Jones floor strip so that the wall path runs threaded too.
+    auto c = testing::water_column(0.3, 0.2, 0.005);
+    c.tank.max = Eigen::Vector2d(0.6, 0.4);
+    WallSurface<2> strip;
+    strip.name = "strip";
+    strip.vertices = {Eigen::Vector2d(0.25, 0), Eigen::Vector2d(0.05, 0)};
+    strip.faces = {{0, 1}};
+    c.walls.push_back(strip);
     auto f = build_fluid(c);
     for (int s = 0; s < 80; ++s)
       f->step();

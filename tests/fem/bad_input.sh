@@ -1,0 +1,67 @@
+#!/bin/sh
+# Bad input: each case must exit with status 2, print exactly one line on stderr naming the
+# file or option at fault, and leave no output file behind.   usage: bad_input.sh CHIPFLEX
+chipflex=$1
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+failures=0
+
+# expect NAME EXPECTED_IN_MESSAGE OUTPUT_FILE COMMAND...
+expect() {
+  name=$1 needle=$2 output=$3
+  shift 3
+  "$@" > "$dir/stdout" 2> "$dir/stderr"
+  status=$?
+  lines=$(wc -l < "$dir/stderr")
+  if [ "$status" -ne 2 ] || [ "$lines" -ne 1 ] || ! grep -q -- "$needle" "$dir/stderr" ||
+     { [ -n "$output" ] && ls "$output"* > /dev/null 2>&1; }; then
+    echo "FAIL $name: status $status, $lines stderr lines:"
+    cat "$dir/stderr"
+    ls "$output"* 2> /dev/null
+    failures=$((failures + 1))
+  else
+    echo "ok   $name: $(cat "$dir/stderr")"
+  fi
+}
+
+"$chipflex" mesh gate -o "$dir/gate.msh" --size 0.0025 > /dev/null || exit 1
+"$chipflex" reduce "$dir/gate.msh" -o "$dir/gate.h5" --clamp clamp --modes 2 > /dev/null || exit 1
+out="$dir/out.h5"
+
+expect "missing mesh" "nothing.msh" "$out" "$chipflex" reduce "$dir/nothing.msh" -o "$out"
+printf 'this is not a mesh\n' > "$dir/garbage.msh"
+expect "malformed mesh" "garbage.msh" "$out" "$chipflex" reduce "$dir/garbage.msh" -o "$out"
+head -c 3000 "$dir/gate.msh" > "$dir/truncated.msh"
+expect "truncated mesh" "truncated.msh" "$out" "$chipflex" reduce "$dir/truncated.msh" -o "$out"
+expect "missing group" "nosuch" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --clamp nosuch
+expect "missing static group" "nosuch" "$out" \
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" --static-modes pressure:nosuch
+expect "bad static kind" "twist" "$out" \
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" --static-modes twist:tip
+expect "nu = 0.5" "--nu" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --nu 0.5
+expect "nu = -1" "--nu" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --nu -1
+expect "E = 0" "--E" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --E 0
+expect "rho < 0" "--rho" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --rho -1
+expect "modes = 0" "--modes" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --modes 0
+expect "degree 3" "--degree" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --degree 3
+expect "bad mesh size" "--size" "$dir/m.msh" "$chipflex" mesh gate -o "$dir/m.msh" --size -1
+expect "unknown mesh kind" "sphere" "$dir/m.msh" "$chipflex" mesh sphere -o "$dir/m.msh"
+
+printf 'garbage garbage garbage\n' > "$dir/garbage.h5"
+expect "info: corrupted body" "garbage.h5" "" "$chipflex" info "$dir/garbage.h5"
+head -c 20000 "$dir/gate.h5" > "$dir/truncated.h5"
+expect "info: truncated body" "truncated.h5" "" "$chipflex" info "$dir/truncated.h5"
+expect "info: missing body" "none.h5" "" "$chipflex" info "$dir/none.h5"
+expect "compare: corrupted body" "garbage.h5" "$dir/c.csv" \
+  "$chipflex" compare "$dir/gate.msh" "$dir/garbage.h5" --load force:tip:1,0 -o "$dir/c.csv"
+expect "compare: missing group" "nosuch" "$dir/c.csv" \
+  "$chipflex" compare "$dir/gate.msh" "$dir/gate.h5" --load force:nosuch:1,0 -o "$dir/c.csv"
+expect "compare: wrong force size" "--load" "$dir/c.csv" \
+  "$chipflex" compare "$dir/gate.msh" "$dir/gate.h5" --load force:tip:1,0,0 -o "$dir/c.csv"
+"$chipflex" mesh gate -o "$dir/other.msh" --size 0.005 > /dev/null
+expect "compare: other mesh" "other.msh" "$dir/c.csv" \
+  "$chipflex" compare "$dir/other.msh" "$dir/gate.h5" --load force:tip:1,0 -o "$dir/c.csv"
+
+[ "$failures" -eq 0 ] && echo "all bad-input cases handled" && exit 0
+echo "$failures bad-input cases failed"
+exit 1
