@@ -314,13 +314,7 @@ std::string one_line(const std::string& what)
 }
 } // namespace
 
-void declare_body_keys(ParameterHandler& prm)
-{
-  prm.enter_subsection("bodies");
-  prm.declare_entry("count", "0", Integer(0),
-                    "Reserved for coupled bodies (coupling/ declares the body keys here).");
-  prm.leave_subsection();
-}
+// declare_body_keys(): apps/body_case_keys.cc (the coupled bodies' keys).
 
 std::string documented_case_keys()
 {

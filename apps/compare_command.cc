@@ -9,7 +9,6 @@
 #include "fem/reduce.h"
 
 #include <deal.II/base/mpi.h>
-
 #include <fstream>
 #include <iomanip>
 #include <iostream>

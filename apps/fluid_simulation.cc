@@ -50,6 +50,7 @@ void FluidSimulation<dim>::load(const Hdf5File& file)
 template <int dim>
 std::string FluidSimulation<dim>::summary() const
 {
+  fluid_->initialise();
   const auto& p = fluid_->parameters();
   std::ostringstream s;
   s << dim << "D SPH fluid: " << fluid_->n_fluid() << " fluid + " << fluid_->n_boundary()

@@ -82,8 +82,8 @@ void print_text(const std::string& path, const ReducedBodyData& b)
 {
   std::ostringstream o;
   o << std::setprecision(6);
-  o << path << ": reduced floating-frame body, format v" << ReducedBodyData::format_version
-    << ", " << b.dim << "D " << b.model << (b.dim == 2 ? " (per metre of depth)" : "") << "\n";
+  o << path << ": reduced floating-frame body, format v" << ReducedBodyData::format_version << ", "
+    << b.dim << "D " << b.model << (b.dim == 2 ? " (per metre of depth)" : "") << "\n";
   o << "  material     E = " << b.youngs_modulus << " Pa, nu = " << b.poisson_ratio
     << ", rho = " << b.density << " kg/m^3\n";
   o << "  mesh         " << b.mesh_file << " (hash " << b.mesh_hash << "), degree "
@@ -100,8 +100,8 @@ void print_text(const std::string& path, const ReducedBodyData& b)
     o << "               " << b.inertia_tensor.row(i) << "\n";
   o << "  modes        " << b.n_modes() << "\n";
   for (int k = 0; k < b.n_modes(); ++k)
-    o << "    " << std::setw(3) << k + 1 << "  " << std::setw(12) << b.frequencies_hz[k]
-      << " Hz  " << b.mode_kinds[k] << "\n";
+    o << "    " << std::setw(3) << k + 1 << "  " << std::setw(12) << b.frequencies_hz[k] << " Hz  "
+      << b.mode_kinds[k] << "\n";
   std::cout << o.str();
 }
 } // namespace

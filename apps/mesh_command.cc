@@ -31,8 +31,9 @@ int mesh_command(const Arguments& args)
   cl.add_option("--thickness", "M", "thickness (gate 0.005, plate 0.002)");
   cl.add_option("--width", "M", "plate width along y", "0.01");
   cl.add_option("--depth", "M", "gate only: extrude to a 3D plate of this depth (z)");
-  cl.add_option("--size", "M", "element edge length (default: thickness / 4 for the gate, "
-                               "thickness / 2 for the plate)");
+  cl.add_option("--size", "M",
+                "element edge length (default: thickness / 4 for the gate, "
+                "thickness / 2 for the plate)");
   cl.add_flag("--simplex", "unstructured triangles/tetrahedra instead of quads/hexahedra");
   if (!cl.parse(args))
     return 0;
@@ -40,7 +41,8 @@ int mesh_command(const Arguments& args)
   const std::string kind = cl.get("KIND");
   meshes::BlockMeshSpec spec;
   spec.simplex = cl.flag("--simplex");
-  auto value = [&](const std::string& name, double fallback) {
+  auto value = [&](const std::string& name, double fallback)
+  {
     const double v = cl.has(name) ? cl.get_double(name) : fallback;
     if (!(v > 0))
       throw InputError(name, "must be positive, got " + std::to_string(v));

@@ -8,7 +8,6 @@
 #include "fem/reduce.h"
 
 #include <deal.II/base/mpi.h>
-
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -114,7 +113,8 @@ int reduce_command(const Arguments& args)
   {
     write_reduced_body(output, body);
     std::cout << "wrote " << output << ": " << body.dim << "D, " << body.n_nodes() << " nodes, "
-              << timings.n_dofs << " DoFs, " << (body.clamp_set.empty() ? "free-free" : "clamped at '" + body.clamp_set + "'")
+              << timings.n_dofs << " DoFs, "
+              << (body.clamp_set.empty() ? "free-free" : "clamped at '" + body.clamp_set + "'")
               << ", mass " << body.mass << " kg" << (body.dim == 2 ? "/m" : "") << "\n";
     for (int k = 0; k < body.n_modes(); ++k)
       std::cout << "  mode " << std::setw(2) << k + 1 << "  " << std::setw(12)

@@ -10,12 +10,15 @@
 #include "apps/case_file.h"
 #include "apps/command_line.h"
 #include "apps/commands.h"
+#include "apps/coupled_simulation.h"
 #include "apps/fluid_simulation.h"
 #include "apps/probe_output.h"
 #include "apps/progress_meter.h"
 #include "common/atomic_output.h"
 #include "common/hdf5_file.h"
 #include "common/input_error.h"
+
+#include <deal.II/base/parameter_handler.h>
 
 #include <omp.h>
 
@@ -27,8 +30,19 @@ namespace chipflex::apps
 {
 namespace
 {
-std::unique_ptr<Simulation> make_simulation(const CaseFile& c)
+std::unique_ptr<Simulation> make_simulation(const CaseFile& c, const std::string& dir)
 {
+  // A case with `subsection bodies` runs coupled (coupling/, 2D).
+  c.parameters->enter_subsection("bodies");
+  const bool coupled = c.parameters->get_integer("count") > 0;
+  c.parameters->leave_subsection();
+  if (coupled)
+  {
+    if (c.dimension != 2)
+      throw InputError(c.path + ": bodies", "coupled bodies are 2D only (dimension = 2)");
+    return std::make_unique<CoupledSimulation>(c.case_2d, read_body_case(*c.parameters, c.path),
+                                               dir);
+  }
   if (c.dimension == 2)
     return std::make_unique<FluidSimulation<2>>(c.case_2d);
   return std::make_unique<FluidSimulation<3>>(c.case_3d);
@@ -109,7 +123,7 @@ int run_command(const Arguments& args)
   std::filesystem::create_directories(dir);
   const std::string checkpoint_path = dir + "/checkpoint.h5";
 
-  auto sim = make_simulation(case_file);
+  auto sim = make_simulation(case_file, dir);
   std::cout << sim->summary() << std::endl;
   ParticleOutput particles(dir);
   ProbeOutput probes(dir + "/probes.csv", sim->probe_columns());
@@ -171,6 +185,8 @@ int run_command(const Arguments& args)
   }
   progress.finish(sim->time(), sim->step_count());
   probes.flush();
+  if (const auto* coupled = dynamic_cast<const CoupledSimulation*>(sim.get()))
+    std::cout << coupled->finish(dir) << std::endl;
   std::cout << "finished at t = " << sim->time() << " s after " << sim->step_count()
             << " steps; " << particles.n_frames() << " frames in " << dir << "/particles.xdmf"
             << std::endl;

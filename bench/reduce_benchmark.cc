@@ -9,10 +9,9 @@
 #include "fem/reduce.h"
 #include "meshes/block_mesher.h"
 
-#include <deal.II/base/mpi.h>
-
 #include <chrono>
 #include <cstdio>
+#include <deal.II/base/mpi.h>
 #include <iomanip>
 #include <iostream>
 #include <sys/resource.h>
@@ -29,7 +28,8 @@ int reduce_benchmark(const Arguments& args)
   std::string petsc_options;
   for (std::size_t i = 0; i < args.size(); ++i)
   {
-    auto value = [&]() -> std::string {
+    auto value = [&]() -> std::string
+    {
       if (i + 1 >= args.size())
         throw InputError(args[i], "needs a value");
       return args[++i];
@@ -105,8 +105,8 @@ int reduce_benchmark(const Arguments& args)
     std::remove(body_file.c_str());
     std::cout << std::fixed << std::setprecision(2)
               << "reduce benchmark: 3D strip 0.24 x 0.013 x 0.004 m, quadratic hexahedra, "
-              << timings.n_cells << " cells, " << timings.n_dofs << " DoFs, " << modes
-              << " modes, " << n_ranks << " MPI process(es)\n"
+              << timings.n_cells << " cells, " << timings.n_dofs << " DoFs, " << modes << " modes, "
+              << n_ranks << " MPI process(es)\n"
               << "  meshing (gmsh, not part of the reduction) " << meshing << " s\n"
               << "  mesh reading          " << timings.mesh_reading << " s\n"
               << "  setup (DoFs, sets)    " << timings.setup << " s\n"
@@ -118,8 +118,8 @@ int reduce_benchmark(const Arguments& args)
               << "  writing (HDF5)        " << writing << " s\n"
               << "  reduction total       " << reduction + writing << " s\n"
               << "  peak memory           " << usage.ru_maxrss / 1024.0 << " MiB (rank 0)\n"
-              << std::setprecision(4) << "  f1 = " << body.frequencies_hz[0]
-              << " Hz, f" << modes << " = " << body.frequencies_hz[modes - 1] << " Hz\n";
+              << std::setprecision(4) << "  f1 = " << body.frequencies_hz[0] << " Hz, f" << modes
+              << " = " << body.frequencies_hz[modes - 1] << " Hz\n";
   }
   return 0;
 }

@@ -94,22 +94,34 @@ template <int dim>
 void CoSimulation<dim>::save(Hdf5File& file, const std::string& group) const
 {
   fluid_.save(file, group + "/fluid");
-  file.ensure_group(group + "/bodies");
-  for (const auto& c : bodies_)
-  {
-    const auto state = c.body->state();
-    file.write(group + "/bodies/" + c.name, state, {state.size()});
-    file.write_attribute(group + "/bodies/" + c.name, "kind", c.body->kind());
-  }
+  save_bodies(file, group + "/bodies");
 }
 
 template <int dim>
 void CoSimulation<dim>::load(const Hdf5File& file, const std::string& group)
 {
   fluid_.load(file, group + "/fluid");
+  load_bodies(file, group + "/bodies");
+}
+
+template <int dim>
+void CoSimulation<dim>::save_bodies(Hdf5File& file, const std::string& group) const
+{
+  file.ensure_group(group);
+  for (const auto& c : bodies_)
+  {
+    const auto state = c.body->state();
+    file.write(group + "/" + c.name, state, {state.size()});
+    file.write_attribute(group + "/" + c.name, "kind", c.body->kind());
+  }
+}
+
+template <int dim>
+void CoSimulation<dim>::load_bodies(const Hdf5File& file, const std::string& group)
+{
   for (auto& c : bodies_)
   {
-    const std::string path = group + "/bodies/" + c.name;
+    const std::string path = group + "/" + c.name;
     if (!file.exists(path))
       throw InputError(file.path(), "checkpoint has no state for body '" + c.name + "'");
     const auto kind = file.read_string_attribute(path, "kind");

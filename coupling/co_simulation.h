@@ -74,6 +74,9 @@ public:
   /// state under `group`/bodies/<name>. load() restores a run built the same way.
   void save(Hdf5File& file, const std::string& group) const;
   void load(const Hdf5File& file, const std::string& group);
+  /// The bodies' part alone (when the fluid is saved by its owner).
+  void save_bodies(Hdf5File& file, const std::string& group) const;
+  void load_bodies(const Hdf5File& file, const std::string& group);
 
 private:
   struct Coupled

@@ -5,7 +5,6 @@
 
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
-
 #include <petscksp.h>
 
 namespace chipflex::fem
@@ -14,8 +13,8 @@ class DirectSolver
 {
 public:
   /// Factorises c_k K + c_m M now. Options prefix `chipflex_direct_`.
-  DirectSolver(double c_k, const dealii::PETScWrappers::MPI::SparseMatrix& stiffness,
-               double c_m, const dealii::PETScWrappers::MPI::SparseMatrix& mass);
+  DirectSolver(double c_k, const dealii::PETScWrappers::MPI::SparseMatrix& stiffness, double c_m,
+               const dealii::PETScWrappers::MPI::SparseMatrix& mass);
   ~DirectSolver();
   DirectSolver(const DirectSolver&) = delete;
   DirectSolver& operator=(const DirectSolver&) = delete;

@@ -2,11 +2,10 @@
 
 #include "fem/petsc_check.h"
 
-#include <slepceps.h>
-
 #include <algorithm>
 #include <chrono>
 #include <numeric>
+#include <slepceps.h>
 
 namespace chipflex::fem
 {

@@ -6,14 +6,13 @@
 
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
-
 #include <vector>
 
 namespace chipflex::fem
 {
 struct EigenSolution
 {
-  std::vector<double> eigenvalues;                          ///< ascending, omega^2
+  std::vector<double> eigenvalues;                         ///< ascending, omega^2
   std::vector<dealii::PETScWrappers::MPI::Vector> vectors; ///< M-normalised
   double factorisation_seconds = 0, solve_seconds = 0;
 };

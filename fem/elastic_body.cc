@@ -3,6 +3,8 @@
 #include "common/atomic_output.h"
 #include "common/input_error.h"
 
+#include <algorithm>
+#include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -16,9 +18,6 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
-
-#include <algorithm>
-#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <set>
@@ -30,10 +29,9 @@ template <int dim>
 ElasticBody<dim>::ElasticBody(const GmshMeshData& mesh_, const Material& material_,
                               unsigned int degree_, const std::string& clamp_group_,
                               MPI_Comm communicator_)
-  : mesh(mesh_), material(material_), degree(degree_), clamp_group(clamp_group_),
-    communicator(communicator_),
-    n_processes(Utilities::MPI::n_mpi_processes(communicator_)),
-    this_process(Utilities::MPI::this_mpi_process(communicator_))
+    : mesh(mesh_), material(material_), degree(degree_), clamp_group(clamp_group_),
+      communicator(communicator_), n_processes(Utilities::MPI::n_mpi_processes(communicator_)),
+      this_process(Utilities::MPI::this_mpi_process(communicator_))
 {
   material.check();
   if (degree != 1 && degree != 2)
@@ -45,8 +43,8 @@ ElasticBody<dim>::ElasticBody(const GmshMeshData& mesh_, const Material& materia
     mesh.require_group(clamp_group, "--clamp");
     if (!mesh.face_groups.count(clamp_group))
       throw InputError(mesh.path, "--clamp needs a boundary group (dimension " +
-                                    std::to_string(dim - 1) + "); '" + clamp_group +
-                                    "' holds cells");
+                                      std::to_string(dim - 1) + "); '" + clamp_group +
+                                      "' holds cells");
   }
 }
 
@@ -64,7 +62,7 @@ void ElasticBody<dim>::build_triangulation()
   for (std::size_t c = 0; c < cells.size(); ++c)
     for (std::size_t v = 0; v < mesh.cells[c].size(); ++v)
       cells[c].vertices[v] =
-        mesh.simplex ? mesh.cells[c][v] : mesh.cells[c][dim == 2 ? quad[v] : hex[v]];
+          mesh.simplex ? mesh.cells[c][v] : mesh.cells[c][dim == 2 ? quad[v] : hex[v]];
   try
   {
     GridTools::invert_all_negative_measure_cells(vertices, cells);
@@ -81,7 +79,7 @@ void ElasticBody<dim>::build_triangulation()
   const auto n_cells = triangulation.n_active_cells();
   for (const auto& cell : triangulation.active_cell_iterators())
     cell->set_subdomain_id(static_cast<types::subdomain_id>(
-      (static_cast<unsigned long long>(cell->active_cell_index()) * n_processes) / n_cells));
+        (static_cast<unsigned long long>(cell->active_cell_index()) * n_processes) / n_cells));
 }
 
 template <int dim>
@@ -103,7 +101,7 @@ void ElasticBody<dim>::setup_system()
   DoFRenumbering::subdomain_wise(dof_handler);
   locally_owned_dofs = DoFTools::locally_owned_dofs_per_subdomain(dof_handler)[this_process];
   const IndexSet relevant =
-    DoFTools::locally_relevant_dofs_per_subdomain(dof_handler)[this_process];
+      DoFTools::locally_relevant_dofs_per_subdomain(dof_handler)[this_process];
   cells.assign(triangulation.n_active_cells(), {});
   for (const auto& cell : dof_handler.active_cell_iterators())
     cells[cell->active_cell_index()] = cell;
@@ -193,7 +191,7 @@ void ElasticBody<dim>::find_group_faces()
       const auto it = boundary.find(key);
       if (it == boundary.end())
         throw InputError(mesh.path, "physical group '" + name +
-                                      "' holds a face that is not on the body's boundary");
+                                        "' holds a face that is not on the body's boundary");
       group_faces[name].push_back(it->second);
       const auto& [c, f] = it->second;
       face_dofs.resize(fe->n_dofs_per_face(f));
@@ -228,7 +226,8 @@ void ElasticBody<dim>::build_skin()
   const auto& base = fe->base_element(0);
   const int p = degree;
   std::vector<types::global_dof_index> face_dofs;
-  auto point = [&](int node) {
+  auto point = [&](int node)
+  {
     Point<dim> x;
     for (int d = 0; d < dim; ++d)
       x[d] = node_coordinates[node][d];
@@ -348,8 +347,8 @@ void ElasticBody<dim>::assemble_system()
           for (unsigned int i = 0; i < dim; ++i)
             for (unsigned int j = 0; j < dim; ++j)
               cell_stiffness(a * dim + i, b * dim + j) +=
-                (lambda * grad[a][i] * grad[b][j] + mu * grad[a][j] * grad[b][i]) * jxw +
-                (i == j ? diagonal : 0.);
+                  (lambda * grad[a][i] * grad[b][j] + mu * grad[a][j] * grad[b][i]) * jxw +
+                  (i == j ? diagonal : 0.);
         }
     }
     for (unsigned int a = 0; a < n_base; ++a)
@@ -377,8 +376,8 @@ void ElasticBody<dim>::assemble_system()
             cell_mass(ia, system_index[b * dim + i]) = scalar_mass(b, a);
           for (unsigned int j = 0; j < dim; ++j)
             k_system(ia, system_index[b * dim + j]) =
-              a <= b ? cell_stiffness(a * dim + i, b * dim + j)
-                     : cell_stiffness(b * dim + j, a * dim + i);
+                a <= b ? cell_stiffness(a * dim + i, b * dim + j)
+                       : cell_stiffness(b * dim + j, a * dim + i);
         }
     constraints.distribute_local_to_global(k_system, local, stiffness_matrix);
     constraints.distribute_local_to_global(cell_mass, local, mass_matrix);
@@ -414,8 +413,8 @@ PETScWrappers::MPI::Vector ElasticBody<dim>::load_vector(const LoadCase& load) c
     throw InputError(load.text, "loads act on boundary groups; '" + load.group + "' holds cells");
   const auto& faces = group_faces.at(load.group);
   const Quadrature<dim - 1> quadrature =
-    mesh.simplex ? Quadrature<dim - 1>(QGaussSimplex<dim - 1>(degree + 1))
-                 : Quadrature<dim - 1>(QGauss<dim - 1>(degree + 1));
+      mesh.simplex ? Quadrature<dim - 1>(QGaussSimplex<dim - 1>(degree + 1))
+                   : Quadrature<dim - 1>(QGauss<dim - 1>(degree + 1));
   FEFaceValues<dim> fe_face(*mapping, *fe, quadrature,
                             update_values | update_normal_vectors | update_JxW_values);
   double area = 0;
@@ -466,8 +465,7 @@ Eigen::VectorXd ElasticBody<dim>::to_nodal(const PETScWrappers::MPI::Vector& v) 
 }
 
 template <int dim>
-void ElasticBody<dim>::from_nodal(const Eigen::VectorXd& nodal,
-                                  PETScWrappers::MPI::Vector& v) const
+void ElasticBody<dim>::from_nodal(const Eigen::VectorXd& nodal, PETScWrappers::MPI::Vector& v) const
 {
   for (std::size_t k = 0; k < dof_of_node.size(); ++k)
     if (locally_owned_dofs.is_element(dof_of_node[k]))
@@ -485,7 +483,7 @@ void ElasticBody<dim>::output_modes(const std::string& path, const Eigen::Matrix
   DataOut<dim> data_out;
   data_out.attach_dof_handler(dof_handler);
   const std::vector<DataComponentInterpretation::DataComponentInterpretation> vector_field(
-    dim, DataComponentInterpretation::component_is_part_of_vector);
+      dim, DataComponentInterpretation::component_is_part_of_vector);
   for (int k = 0; k < modes.cols(); ++k)
   {
     for (std::size_t r = 0; r < dof_of_node.size(); ++r)
@@ -515,7 +513,8 @@ void ElasticBody<dim>::export_matrices(const std::string& directory) const
   for (types::global_dof_index d = 0; d < dof_handler.n_dofs(); ++d)
     if (!constraints.is_constrained(d))
       row_of_dof[d] = n_rows++;
-  auto write = [&](const PETScWrappers::MPI::SparseMatrix& matrix, const std::string& name) {
+  auto write = [&](const PETScWrappers::MPI::SparseMatrix& matrix, const std::string& name)
+  {
     std::vector<std::tuple<long, long, double>> entries;
     for (types::global_dof_index d = 0; d < dof_handler.n_dofs(); ++d)
     {

@@ -16,6 +16,8 @@
 #include "fem/load_case.h"
 #include "fem/material.h"
 
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
 #include <deal.II/base/index_set.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -24,10 +26,6 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
-
-#include <Eigen/Dense>
-#include <Eigen/Sparse>
-
 #include <map>
 #include <memory>
 #include <string>
@@ -91,7 +89,7 @@ public:
 
   std::vector<std::array<double, 3>> node_coordinates;
   std::vector<types::global_dof_index> dof_of_node; ///< index node*dim + component
-  std::vector<int> node_of_dof;                      ///< -1 never happens after setup
+  std::vector<int> node_of_dof;                     ///< -1 never happens after setup
   std::vector<typename DoFHandler<dim>::active_cell_iterator> cells; ///< by active index
   std::map<std::string, std::vector<int>> node_sets;
   std::vector<int> skin_nodes;

@@ -76,16 +76,15 @@ CompareResult compare(const GmshMeshData& mesh, const ReducedBodyData& reduced,
   material.poisson_ratio = reduced.poisson_ratio;
   material.density = reduced.density;
   material.plane_stress = reduced.model == "plane_stress";
-  ElasticBody<dim> body(mesh, material, reduced.element_degree, reduced.clamp_set,
-                        MPI_COMM_WORLD);
+  ElasticBody<dim> body(mesh, material, reduced.element_degree, reduced.clamp_set, MPI_COMM_WORLD);
   auto t0 = clock::now();
   body.setup_system();
   body.assemble_system();
   const double assembly_seconds = seconds_since(t0);
   if (static_cast<int>(body.n_nodes()) != reduced.n_nodes())
     throw InputError(settings.body_file, "has " + std::to_string(reduced.n_nodes()) +
-                                           " nodes, the mesh gives " +
-                                           std::to_string(body.n_nodes()));
+                                             " nodes, the mesh gives " +
+                                             std::to_string(body.n_nodes()));
   for (int i = 0; i < reduced.n_nodes(); ++i)
     for (int d = 0; d < dim; ++d)
       if (std::abs(reduced.nodes(i, d) - body.node_coordinates[i][d]) >
@@ -106,7 +105,8 @@ CompareResult compare(const GmshMeshData& mesh, const ReducedBodyData& reduced,
   std::vector<PETScWrappers::MPI::Vector> observe_full(dim, body.new_vector());
   for (int d = 0; d < dim; ++d)
     body.from_nodal(observe.row(d).transpose(), observe_full[d]);
-  auto centroid = [&](const PETScWrappers::MPI::Vector& u) {
+  auto centroid = [&](const PETScWrappers::MPI::Vector& u)
+  {
     Eigen::VectorXd c(dim);
     for (int d = 0; d < dim; ++d)
       c[d] = observe_full[d] * u;
@@ -165,8 +165,7 @@ CompareResult compare(const GmshMeshData& mesh, const ReducedBodyData& reduced,
   const Eigen::VectorXd modal_force = reduced.psi.transpose() * force_nodal;
   const Eigen::MatrixXd observe_modal = observe * reduced.psi;
   result.static_reduced = observe_modal * reduced.stiffness_matrix.ldlt().solve(modal_force);
-  result.transient_reduced =
-    reduced_step_response<dim>(reduced, force_nodal, nodes, dt, n_steps);
+  result.transient_reduced = reduced_step_response<dim>(reduced, force_nodal, nodes, dt, n_steps);
   result.reduced_integrator = "mbs::FloatingFrameBody, clamped frame, generalised-alpha rho=1";
   result.reduced_seconds = seconds_since(t0);
 
@@ -174,14 +173,14 @@ CompareResult compare(const GmshMeshData& mesh, const ReducedBodyData& reduced,
   for (int step = 0; step <= n_steps; ++step)
     result.time[step] = step * dt;
   result.static_rel_error =
-    (result.static_reduced - result.static_full).norm() / result.static_full.norm();
+      (result.static_reduced - result.static_full).norm() / result.static_full.norm();
   double largest_full = 0, largest_difference = 0;
   for (int step = 0; step <= n_steps; ++step)
   {
     largest_full = std::max(largest_full, result.transient_full.row(step).norm());
     largest_difference =
-      std::max(largest_difference,
-               (result.transient_reduced.row(step) - result.transient_full.row(step)).norm());
+        std::max(largest_difference,
+                 (result.transient_reduced.row(step) - result.transient_full.row(step)).norm());
   }
   result.transient_rel_error = largest_difference / largest_full;
   return result;
@@ -196,7 +195,7 @@ CompareResult compare_with_full(const CompareSettings& settings)
                      "is a free-free body; compare needs a clamped one (reduce with --clamp)");
   if (file_hash(settings.mesh_file) != reduced.mesh_hash)
     throw InputError(settings.mesh_file, "is not the mesh " + settings.body_file +
-                                           " was reduced from (its hash differs)");
+                                             " was reduced from (its hash differs)");
   const GmshMeshData mesh = read_gmsh_mesh(settings.mesh_file);
   if (mesh.dim != reduced.dim)
     throw InputError(settings.mesh_file, "dimension differs from the body file's");

@@ -3,11 +3,10 @@
 #include "common/input_error.h"
 #include "meshes/gmsh_session.h"
 
-#include <gmsh.h>
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <gmsh.h>
 #include <unordered_map>
 
 namespace chipflex::fem
@@ -22,7 +21,7 @@ void GmshMeshData::require_group(const std::string& name, const std::string& why
     for (const auto& g : cell_groups)
       known += (known.empty() ? "" : ", ") + g.first;
     throw InputError(path, "no physical group '" + name + "' (needed for " + why +
-                             "; the mesh has: " + (known.empty() ? "none" : known) + ")");
+                               "; the mesh has: " + (known.empty() ? "none" : known) + ")");
   }
 }
 
@@ -65,143 +64,149 @@ GmshMeshData read_gmsh_mesh(const std::string& path)
   }
   GmshMeshData mesh;
   mesh.path = path;
-  meshes::with_gmsh_model(path, [&] {
-    gmsh::open(path);
-    std::string error;
-    gmsh::logger::getLastError(error);
-    if (!error.empty())
-      throw InputError(path, "not a readable gmsh mesh (" + error + ")");
-
-    for (int d = 3; d >= 2 && mesh.dim == 0; --d)
-    {
-      std::vector<int> types;
-      std::vector<std::vector<std::size_t>> tags, nodes;
-      gmsh::model::mesh::getElements(types, tags, nodes, d);
-      for (const auto& t : tags)
-        if (!t.empty())
-          mesh.dim = d;
-    }
-    if (mesh.dim == 0)
-      throw InputError(path, "no 2D or 3D elements (empty, truncated or not a mesh)");
-    const int dim = mesh.dim;
-
-    // Coordinates of all nodes by tag.
-    std::vector<std::size_t> node_tags;
-    std::vector<double> coords, parametric;
-    gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
-    std::unordered_map<std::size_t, std::size_t> position;
-    for (std::size_t i = 0; i < node_tags.size(); ++i)
-      position[node_tags[i]] = i;
-
-    // Body cells, on every entity of dimension dim; vertices renumbered as first used.
-    std::unordered_map<std::size_t, unsigned int> vertex_of_tag;
-    auto vertex = [&](std::size_t tag) -> unsigned int {
-      const auto it = vertex_of_tag.find(tag);
-      if (it != vertex_of_tag.end())
-        return it->second;
-      const auto p = position.find(tag);
-      if (p == position.end())
-        throw InputError(path, "element refers to a missing node " + std::to_string(tag));
-      const double* x = &coords[3 * p->second];
-      if (dim == 2 && std::abs(x[2]) > 1e-12 * (1 + std::abs(x[0]) + std::abs(x[1])))
-        throw InputError(path, "a 2D mesh must lie in the plane z = 0");
-      mesh.vertices.push_back({x[0], x[1], x[2]});
-      return vertex_of_tag[tag] = mesh.vertices.size() - 1;
-    };
-    gmsh::vectorpair entities;
-    gmsh::model::getEntities(entities, dim);
-    std::map<int, std::pair<unsigned int, unsigned int>> cell_range; // entity -> [first, end)
-    int cell_kind = -1;
-    for (const auto& [d, tag] : entities)
-    {
-      const auto e = elements_of(d, tag);
-      const unsigned int first = mesh.cells.size();
-      for (std::size_t k = 0; k < e.types.size(); ++k)
+  meshes::with_gmsh_model(
+      path,
+      [&]
       {
-        int element_dim;
-        bool simplex;
-        const int corners = corners_of(e.types[k], &element_dim, &simplex);
-        const bool supported = dim == 2 ? (corners == 3 || corners == 4)
-                                        : (corners == 4 || corners == 8);
-        if (!supported)
-          throw InputError(path, "unsupported element type " + std::to_string(e.types[k]) +
-                                   " (chipflex reads triangles, quadrilaterals, tetrahedra, "
-                                   "hexahedra)");
-        if (cell_kind != -1 && cell_kind != int(simplex))
-          throw InputError(path, "mixed simplex and quad/hex cells are not supported");
-        cell_kind = simplex;
-        int n_nodes_per_element = 0;
+        // gmsh keeps its last error message; only a new one belongs to this file.
+        std::string before, error;
+        gmsh::logger::getLastError(before);
+        gmsh::open(path);
+        gmsh::logger::getLastError(error);
+        if (!error.empty() && error != before)
+          throw InputError(path, "not a readable gmsh mesh (" + error + ")");
+
+        for (int d = 3; d >= 2 && mesh.dim == 0; --d)
         {
-          std::string name;
-          int ed, order, n_primary;
-          std::vector<double> local;
-          gmsh::model::mesh::getElementProperties(e.types[k], name, ed, order,
-                                                  n_nodes_per_element, local, n_primary);
+          std::vector<int> types;
+          std::vector<std::vector<std::size_t>> tags, nodes;
+          gmsh::model::mesh::getElements(types, tags, nodes, d);
+          for (const auto& t : tags)
+            if (!t.empty())
+              mesh.dim = d;
         }
-        for (std::size_t i = 0; i + n_nodes_per_element <= e.nodes[k].size();
-             i += n_nodes_per_element)
-        {
-          std::vector<unsigned int> cell(corners);
-          for (int c = 0; c < corners; ++c)
-            cell[c] = vertex(e.nodes[k][i + c]);
-          mesh.cells.push_back(std::move(cell));
-        }
-      }
-      cell_range[tag] = {first, static_cast<unsigned int>(mesh.cells.size())};
-    }
-    mesh.simplex = cell_kind == 1;
+        if (mesh.dim == 0)
+          throw InputError(path, "no 2D or 3D elements (empty, truncated or not a mesh)");
+        const int dim = mesh.dim;
 
-    gmsh::vectorpair groups;
-    gmsh::model::getPhysicalGroups(groups);
-    for (const auto& [d, group] : groups)
-    {
-      std::string name;
-      gmsh::model::getPhysicalName(d, group, name);
-      if (name.empty())
-        name = std::to_string(group);
-      std::vector<int> group_entities;
-      gmsh::model::getEntitiesForPhysicalGroup(d, group, group_entities);
-      if (d == dim)
-      {
-        auto& ids = mesh.cell_groups[name];
-        for (int entity : group_entities)
-          for (unsigned int c = cell_range[entity].first; c < cell_range[entity].second; ++c)
-            ids.push_back(c);
-      }
-      else if (d == dim - 1)
-      {
-        auto& faces = mesh.face_groups[name];
-        for (int entity : group_entities)
+        // Coordinates of all nodes by tag.
+        std::vector<std::size_t> node_tags;
+        std::vector<double> coords, parametric;
+        gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
+        std::unordered_map<std::size_t, std::size_t> position;
+        for (std::size_t i = 0; i < node_tags.size(); ++i)
+          position[node_tags[i]] = i;
+
+        // Body cells, on every entity of dimension dim; vertices renumbered as first used.
+        std::unordered_map<std::size_t, unsigned int> vertex_of_tag;
+        auto vertex = [&](std::size_t tag) -> unsigned int
         {
-          const auto e = elements_of(d, entity);
+          const auto it = vertex_of_tag.find(tag);
+          if (it != vertex_of_tag.end())
+            return it->second;
+          const auto p = position.find(tag);
+          if (p == position.end())
+            throw InputError(path, "element refers to a missing node " + std::to_string(tag));
+          const double* x = &coords[3 * p->second];
+          if (dim == 2 && std::abs(x[2]) > 1e-12 * (1 + std::abs(x[0]) + std::abs(x[1])))
+            throw InputError(path, "a 2D mesh must lie in the plane z = 0");
+          mesh.vertices.push_back({x[0], x[1], x[2]});
+          return vertex_of_tag[tag] = mesh.vertices.size() - 1;
+        };
+        gmsh::vectorpair entities;
+        gmsh::model::getEntities(entities, dim);
+        std::map<int, std::pair<unsigned int, unsigned int>> cell_range; // entity -> [first, end)
+        int cell_kind = -1;
+        for (const auto& [d, tag] : entities)
+        {
+          const auto e = elements_of(d, tag);
+          const unsigned int first = mesh.cells.size();
           for (std::size_t k = 0; k < e.types.size(); ++k)
           {
             int element_dim;
             bool simplex;
             const int corners = corners_of(e.types[k], &element_dim, &simplex);
-            std::string n;
-            int ed, order, n_nodes, n_primary;
-            std::vector<double> local;
-            gmsh::model::mesh::getElementProperties(e.types[k], n, ed, order, n_nodes, local,
-                                                    n_primary);
-            for (std::size_t i = 0; i + n_nodes <= e.nodes[k].size(); i += n_nodes)
+            const bool supported =
+                dim == 2 ? (corners == 3 || corners == 4) : (corners == 4 || corners == 8);
+            if (!supported)
+              throw InputError(path, "unsupported element type " + std::to_string(e.types[k]) +
+                                         " (chipflex reads triangles, quadrilaterals, tetrahedra, "
+                                         "hexahedra)");
+            if (cell_kind != -1 && cell_kind != int(simplex))
+              throw InputError(path, "mixed simplex and quad/hex cells are not supported");
+            cell_kind = simplex;
+            int n_nodes_per_element = 0;
             {
-              std::vector<unsigned int> face(corners);
+              std::string name;
+              int ed, order, n_primary;
+              std::vector<double> local;
+              gmsh::model::mesh::getElementProperties(e.types[k], name, ed, order,
+                                                      n_nodes_per_element, local, n_primary);
+            }
+            for (std::size_t i = 0; i + n_nodes_per_element <= e.nodes[k].size();
+                 i += n_nodes_per_element)
+            {
+              std::vector<unsigned int> cell(corners);
               for (int c = 0; c < corners; ++c)
+                cell[c] = vertex(e.nodes[k][i + c]);
+              mesh.cells.push_back(std::move(cell));
+            }
+          }
+          cell_range[tag] = {first, static_cast<unsigned int>(mesh.cells.size())};
+        }
+        mesh.simplex = cell_kind == 1;
+
+        gmsh::vectorpair groups;
+        gmsh::model::getPhysicalGroups(groups);
+        for (const auto& [d, group] : groups)
+        {
+          std::string name;
+          gmsh::model::getPhysicalName(d, group, name);
+          if (name.empty())
+            name = std::to_string(group);
+          std::vector<int> group_entities;
+          gmsh::model::getEntitiesForPhysicalGroup(d, group, group_entities);
+          if (d == dim)
+          {
+            auto& ids = mesh.cell_groups[name];
+            for (int entity : group_entities)
+              for (unsigned int c = cell_range[entity].first; c < cell_range[entity].second; ++c)
+                ids.push_back(c);
+          }
+          else if (d == dim - 1)
+          {
+            auto& faces = mesh.face_groups[name];
+            for (int entity : group_entities)
+            {
+              const auto e = elements_of(d, entity);
+              for (std::size_t k = 0; k < e.types.size(); ++k)
               {
-                const auto it = vertex_of_tag.find(e.nodes[k][i + c]);
-                if (it == vertex_of_tag.end())
-                  throw InputError(path, "physical group '" + name +
-                                           "' has a face that is not on the body's cells");
-                face[c] = it->second;
+                int element_dim;
+                bool simplex;
+                const int corners = corners_of(e.types[k], &element_dim, &simplex);
+                std::string n;
+                int ed, order, n_nodes, n_primary;
+                std::vector<double> local;
+                gmsh::model::mesh::getElementProperties(e.types[k], n, ed, order, n_nodes, local,
+                                                        n_primary);
+                for (std::size_t i = 0; i + n_nodes <= e.nodes[k].size(); i += n_nodes)
+                {
+                  std::vector<unsigned int> face(corners);
+                  for (int c = 0; c < corners; ++c)
+                  {
+                    const auto it = vertex_of_tag.find(e.nodes[k][i + c]);
+                    if (it == vertex_of_tag.end())
+                      throw InputError(path, "physical group '" + name +
+                                                 "' has a face that is not on the body's cells");
+                    face[c] = it->second;
+                  }
+                  faces.push_back(std::move(face));
+                }
               }
-              faces.push_back(std::move(face));
             }
           }
         }
-      }
-    }
-  });
+      });
   return mesh;
 }
 } // namespace chipflex::fem

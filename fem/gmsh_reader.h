@@ -13,8 +13,8 @@ namespace chipflex::fem
 struct GmshMeshData
 {
   std::string path;
-  int dim = 0;            ///< highest element dimension: 2 or 3
-  bool simplex = false;   ///< triangles/tetrahedra (true) or quads/hexahedra (false)
+  int dim = 0;          ///< highest element dimension: 2 or 3
+  bool simplex = false; ///< triangles/tetrahedra (true) or quads/hexahedra (false)
   /// Vertices used by the body's cells, renumbered 0..n-1 (z = 0 in 2D).
   std::vector<std::array<double, 3>> vertices;
   /// Body cells: corner vertex ids in gmsh's order (higher-order gmsh nodes are dropped:

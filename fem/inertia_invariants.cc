@@ -19,13 +19,14 @@ void compute_inertia_invariants(const Eigen::SparseMatrix<double>& ms, ReducedBo
   // (z = 0 in 2D); the inertia tensor is I = trace(J) 1 - J.
   Eigen::Matrix3d j = Eigen::Matrix3d::Zero();
   j.topLeftCorner(dim, dim) =
-    body.c_xx - body.mass * body.center_of_mass * body.center_of_mass.transpose();
+      body.c_xx - body.mass * body.center_of_mass * body.center_of_mass.transpose();
   body.inertia_tensor = j.trace() * Eigen::Matrix3d::Identity() - j;
 
   // Mode k as an n x dim field: row i = displacement of node i (psi row = node*dim + c).
-  auto field = [&](int k) {
+  auto field = [&](int k)
+  {
     return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-      body.psi.col(k).data(), n, dim);
+        body.psi.col(k).data(), n, dim);
   };
   std::vector<Eigen::MatrixXd> fields(m), ms_fields(m);
   for (int k = 0; k < m; ++k)

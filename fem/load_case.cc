@@ -41,7 +41,7 @@ LoadCase LoadCase::parse(const std::string& text, int dim, const std::string& op
     }
     if (static_cast<int>(load.force.size()) != dim)
       throw InputError(where, "the force needs " + std::to_string(dim) + " components for a " +
-                                std::to_string(dim) + "D body");
+                                  std::to_string(dim) + "D body");
   }
   else
     throw InputError(where, "unknown load kind '" + kind + "' (expected pressure or force)");

@@ -20,13 +20,13 @@ struct Material
   void check() const
   {
     if (!(youngs_modulus > 0))
-      throw InputError("--E", "Young's modulus must be positive, got " +
-                                std::to_string(youngs_modulus));
+      throw InputError("--E",
+                       "Young's modulus must be positive, got " + std::to_string(youngs_modulus));
     if (!(density > 0))
       throw InputError("--rho", "density must be positive, got " + std::to_string(density));
     if (!(poisson_ratio > -1 && poisson_ratio < 0.5))
       throw InputError("--nu", "Poisson's ratio must lie in (-1, 0.5), got " +
-                                 std::to_string(poisson_ratio));
+                                   std::to_string(poisson_ratio));
   }
 
   double shear_modulus() const { return youngs_modulus / (2 * (1 + poisson_ratio)); }

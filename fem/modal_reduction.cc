@@ -34,7 +34,7 @@ double diagonal_ratio(const PETScWrappers::MPI::SparseMatrix& a,
 template <int dim>
 ModalReduction<dim>::ModalReduction(const ElasticBody<dim>& body_, unsigned int n_modes_,
                                     std::vector<LoadCase> static_cases_)
-  : body(body_), n_modes(n_modes_), static_cases(std::move(static_cases_))
+    : body(body_), n_modes(n_modes_), static_cases(std::move(static_cases_))
 {
   if (n_modes == 0 && static_cases.empty())
     throw InputError("--modes", "must be at least 1 (or give --static-modes)");
@@ -67,8 +67,8 @@ template <int dim>
 void ModalReduction<dim>::compute_rigid_modes()
 {
   const int n = body.n_nodes(), n_rigid = dim * (dim + 1) / 2;
-  Eigen::VectorXd centre = Eigen::VectorXd::Zero(dim), masses = body.scalar_mass_matrix *
-                                                              Eigen::VectorXd::Ones(n);
+  Eigen::VectorXd centre = Eigen::VectorXd::Zero(dim),
+                  masses = body.scalar_mass_matrix * Eigen::VectorXd::Ones(n);
   for (int i = 0; i < n; ++i)
     for (int d = 0; d < dim; ++d)
       centre[d] += masses[i] * body.node_coordinates[i][d] / masses.sum();
@@ -115,17 +115,16 @@ void ModalReduction<dim>::compute_normal_modes(ReductionTimings& timings)
   // -1e-8 times a typical eigenvalue keeps K - sigma M regular (condition ~1e8) while the
   // rigid modes (lambda = 0) stay the nearest and are found and discarded.
   const double target =
-    n_rigid ? -1e-8 * diagonal_ratio(body.stiffness_matrix, body.mass_matrix, layout) : 0.;
+      n_rigid ? -1e-8 * diagonal_ratio(body.stiffness_matrix, body.mass_matrix, layout) : 0.;
   const unsigned int n_wanted = n_modes + n_rigid;
-  const auto n_free =
-    body.dof_handler.n_dofs() -
-    (body.is_clamped() ? dim * body.node_sets.at(body.clamp_group).size() : 0);
+  const auto n_free = body.dof_handler.n_dofs() -
+                      (body.is_clamped() ? dim * body.node_sets.at(body.clamp_group).size() : 0);
   if (n_wanted >= n_free)
     throw InputError("--modes", "asks for " + std::to_string(n_modes) +
-                                  " modes; the mesh has only " + std::to_string(n_free) +
-                                  " free DoFs");
+                                    " modes; the mesh has only " + std::to_string(n_free) +
+                                    " free DoFs");
   auto solution =
-    solve_eigenproblem(body.stiffness_matrix, body.mass_matrix, n_wanted, target, layout);
+      solve_eigenproblem(body.stiffness_matrix, body.mass_matrix, n_wanted, target, layout);
   timings.factorisation = solution.factorisation_seconds;
   timings.eigen_solve = solution.solve_seconds;
 
@@ -134,9 +133,9 @@ void ModalReduction<dim>::compute_normal_modes(ReductionTimings& timings)
     const double first_elastic = solution.eigenvalues[n_rigid];
     for (unsigned int k = 0; k < n_rigid; ++k)
       if (std::abs(solution.eigenvalues[k]) > 1e-4 * first_elastic)
-        throw InputError(body.mesh.path,
-                         "the free body does not have exactly " + std::to_string(n_rigid) +
-                           " rigid-body modes (is it one connected piece?)");
+        throw InputError(body.mesh.path, "the free body does not have exactly " +
+                                             std::to_string(n_rigid) +
+                                             " rigid-body modes (is it one connected piece?)");
     if (solution.eigenvalues[n_rigid - 1] < -1e-4 * first_elastic)
       throw std::logic_error("negative eigenvalue of an elastic body");
   }
@@ -202,7 +201,8 @@ void ModalReduction<dim>::orthonormalise_and_fix_signs()
 {
   std::vector<Eigen::VectorXd> columns;
   kinds.clear();
-  auto add = [&](Eigen::VectorXd v, const std::string& kind) {
+  auto add = [&](Eigen::VectorXd v, const std::string& kind)
+  {
     const double original = std::sqrt(v.dot(apply_mass(v)));
     for (int pass = 0; pass < 2; ++pass)
       for (const auto& c : columns)

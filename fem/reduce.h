@@ -16,12 +16,12 @@ struct ReductionSettings
 {
   std::string mesh_file;
   Material material;
-  unsigned int degree = 2;          ///< element degree on the gmsh cells, 1 or 2
-  std::string clamp_group;          ///< empty: free-free body
-  unsigned int n_modes = 10;        ///< elastic normal modes (rigid modes never counted)
+  unsigned int degree = 2;               ///< element degree on the gmsh cells, 1 or 2
+  std::string clamp_group;               ///< empty: free-free body
+  unsigned int n_modes = 10;             ///< elastic normal modes (rigid modes never counted)
   std::vector<std::string> static_modes; ///< load cases, e.g. "pressure:skin", "force:tip:0,-1"
-  std::string vtu_file;             ///< mode shapes for ParaView; empty: none
-  std::string export_directory;     ///< M.mtx, K.mtx, dof_nodes.csv; empty: none
+  std::string vtu_file;                  ///< mode shapes for ParaView; empty: none
+  std::string export_directory;          ///< M.mtx, K.mtx, dof_nodes.csv; empty: none
 };
 
 struct ReductionTimings
@@ -33,15 +33,14 @@ struct ReductionTimings
 
 /// The whole reduction: mesh -> K, M -> normal and static modes -> mass-orthonormal basis
 /// -> inertia invariants. Throws InputError for bad input.
-ReducedBodyData reduce_body(const ReductionSettings& settings,
-                            ReductionTimings* timings = nullptr);
+ReducedBodyData reduce_body(const ReductionSettings& settings, ReductionTimings* timings = nullptr);
 
 struct CompareSettings
 {
   std::string mesh_file, body_file;
-  std::string load;      ///< force:GROUP:fx,fy[,fz]
-  double duration = 0;   ///< s; 0: five periods of the first mode
-  double time_step = 0;  ///< s; 0: 1/40 of the first period
+  std::string load;     ///< force:GROUP:fx,fy[,fz]
+  double duration = 0;  ///< s; 0: five periods of the first mode
+  double time_step = 0; ///< s; 0: 1/40 of the first period
 };
 
 struct CompareResult
@@ -51,7 +50,7 @@ struct CompareResult
   double static_rel_error = 0;
   std::vector<double> time;
   Eigen::MatrixXd transient_full, transient_reduced; ///< (steps + 1) x dim
-  double transient_rel_error = 0; ///< max_t |u_r - u_f| / max_t |u_f|
+  double transient_rel_error = 0;                    ///< max_t |u_r - u_f| / max_t |u_f|
   double full_seconds = 0, reduced_seconds = 0;
   std::string reduced_integrator; ///< which reduced model ran
 };

@@ -3,13 +3,12 @@
 #include "common/input_error.h"
 #include "meshes/gmsh_session.h"
 
-#include <gmsh.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <gmsh.h>
 #include <unistd.h>
 
 namespace chipflex::meshes
@@ -17,8 +16,7 @@ namespace chipflex::meshes
 namespace
 {
 /// Entities of dimension `d` lying in the (slightly inflated) box [lo, hi].
-std::vector<int> entities_in(int d, std::array<double, 3> lo, std::array<double, 3> hi,
-                             double eps)
+std::vector<int> entities_in(int d, std::array<double, 3> lo, std::array<double, 3> hi, double eps)
 {
   gmsh::vectorpair tags;
   gmsh::model::getEntitiesInBoundingBox(lo[0] - eps, lo[1] - eps, lo[2] - eps, hi[0] + eps,
@@ -39,8 +37,10 @@ void make_structured(const BlockMeshSpec& spec)
   {
     double x0, y0, z0, x1, y1, z1;
     gmsh::model::getBoundingBox(1, c.second, x0, y0, z0, x1, y1, z1);
+    // OpenCASCADE pads bounding boxes by ~1e-7 on each side: without the slack of 1 %
+    // of an element, a 5 mm edge at 1.25 mm would get 5 elements instead of 4.
     const double length = std::max({x1 - x0, y1 - y0, z1 - z0});
-    const int n = std::max(1, static_cast<int>(std::ceil(length / spec.size - 1e-9)));
+    const int n = std::max(1, static_cast<int>(std::ceil(length / spec.size - 0.01)));
     gmsh::model::mesh::setTransfiniteCurve(c.second, n + 1);
   }
   gmsh::vectorpair surfaces;
@@ -74,66 +74,73 @@ std::size_t write_block_mesh(const BlockMeshSpec& spec, const std::string& path)
   std::size_t n_elements = 0;
   try
   {
-  with_gmsh_model(path, [&] {
-    gmsh::model::add("chipflex_block");
-    int body;
-    if (dim == 2)
-      body = gmsh::model::occ::addRectangle(0, 0, 0, spec.extent[0], spec.extent[1]);
-    else
-      body = gmsh::model::occ::addBox(0, 0, 0, spec.extent[0], spec.extent[1], spec.extent[2]);
-    gmsh::model::occ::synchronize();
+    with_gmsh_model(
+        path,
+        [&]
+        {
+          gmsh::model::add("chipflex_block");
+          int body;
+          if (dim == 2)
+            body = gmsh::model::occ::addRectangle(0, 0, 0, spec.extent[0], spec.extent[1]);
+          else
+            body =
+                gmsh::model::occ::addBox(0, 0, 0, spec.extent[0], spec.extent[1], spec.extent[2]);
+          gmsh::model::occ::synchronize();
 
-    std::array<double, 3> lo{0, 0, 0}, hi = spec.extent;
-    if (dim == 2)
-      hi[2] = 0;
-    // Inflation of the selection boxes: above OpenCASCADE's bounding-box padding (1e-7),
-    // far below the thinnest extent.
-    const double thinnest = *std::min_element(spec.extent.begin(), spec.extent.begin() + dim);
-    const double eps = std::max(1e-3 * thinnest, 1e-6);
-    const int a = spec.long_axis;
-    auto end_face = [&](bool at_max) {
-      auto l = lo, h = hi;
-      (at_max ? l : h)[a] = at_max ? hi[a] : lo[a];
-      return entities_in(dim - 1, l, h, eps);
-    };
-    gmsh::model::setPhysicalName(dim, gmsh::model::addPhysicalGroup(dim, {body}), "body");
-    gmsh::model::setPhysicalName(
-      dim - 1, gmsh::model::addPhysicalGroup(dim - 1, end_face(spec.clamp_at_max)), "clamp");
-    gmsh::model::setPhysicalName(
-      dim - 1, gmsh::model::addPhysicalGroup(dim - 1, end_face(!spec.clamp_at_max)), "tip");
-    gmsh::model::setPhysicalName(
-      dim - 1, gmsh::model::addPhysicalGroup(dim - 1, entities_in(dim - 1, lo, hi, eps)), "skin");
-    // Each side by its position, e.g. xmin = the face at x = 0 (the gate's upstream face).
-    const char* axis_name[] = {"x", "y", "z"};
-    for (int axis = 0; axis < dim; ++axis)
-      for (const bool at_max : {false, true})
-      {
-        auto l = lo, h = hi;
-        (at_max ? l : h)[axis] = at_max ? hi[axis] : lo[axis];
-        gmsh::model::setPhysicalName(
-          dim - 1, gmsh::model::addPhysicalGroup(dim - 1, entities_in(dim - 1, l, h, eps)),
-          std::string(axis_name[axis]) + (at_max ? "max" : "min"));
-      }
+          std::array<double, 3> lo{0, 0, 0}, hi = spec.extent;
+          if (dim == 2)
+            hi[2] = 0;
+          // Inflation of the selection boxes: above OpenCASCADE's bounding-box padding (1e-7),
+          // far below the thinnest extent.
+          const double thinnest = *std::min_element(spec.extent.begin(), spec.extent.begin() + dim);
+          const double eps = std::max(1e-3 * thinnest, 1e-6);
+          const int a = spec.long_axis;
+          auto end_face = [&](bool at_max)
+          {
+            auto l = lo, h = hi;
+            (at_max ? l : h)[a] = at_max ? hi[a] : lo[a];
+            return entities_in(dim - 1, l, h, eps);
+          };
+          gmsh::model::setPhysicalName(dim, gmsh::model::addPhysicalGroup(dim, {body}), "body");
+          gmsh::model::setPhysicalName(
+              dim - 1, gmsh::model::addPhysicalGroup(dim - 1, end_face(spec.clamp_at_max)),
+              "clamp");
+          gmsh::model::setPhysicalName(
+              dim - 1, gmsh::model::addPhysicalGroup(dim - 1, end_face(!spec.clamp_at_max)), "tip");
+          gmsh::model::setPhysicalName(
+              dim - 1, gmsh::model::addPhysicalGroup(dim - 1, entities_in(dim - 1, lo, hi, eps)),
+              "skin");
+          // Each side by its position, e.g. xmin = the face at x = 0 (the gate's upstream face).
+          const char* axis_name[] = {"x", "y", "z"};
+          for (int axis = 0; axis < dim; ++axis)
+            for (const bool at_max : {false, true})
+            {
+              auto l = lo, h = hi;
+              (at_max ? l : h)[axis] = at_max ? hi[axis] : lo[axis];
+              gmsh::model::setPhysicalName(
+                  dim - 1, gmsh::model::addPhysicalGroup(dim - 1, entities_in(dim - 1, l, h, eps)),
+                  std::string(axis_name[axis]) + (at_max ? "max" : "min"));
+            }
 
-    if (spec.simplex)
-    {
-      gmsh::option::setNumber("Mesh.MeshSizeMax", spec.size);
-      gmsh::option::setNumber("Mesh.MeshSizeMin", 0.5 * spec.size);
-    }
-    else
-      make_structured(spec);
-    gmsh::model::mesh::generate(dim);
+          if (spec.simplex)
+          {
+            gmsh::option::setNumber("Mesh.MeshSizeMax", spec.size);
+            gmsh::option::setNumber("Mesh.MeshSizeMin", 0.5 * spec.size);
+          }
+          else
+            make_structured(spec);
+          gmsh::model::mesh::generate(dim);
 
-    std::vector<int> types;
-    std::vector<std::vector<std::size_t>> tags, nodes;
-    gmsh::model::mesh::getElements(types, tags, nodes, dim);
-    for (const auto& t : tags)
-      n_elements += t.size();
+          std::vector<int> types;
+          std::vector<std::vector<std::size_t>> tags, nodes;
+          gmsh::model::mesh::getElements(types, tags, nodes, dim);
+          for (const auto& t : tags)
+            n_elements += t.size();
 
-    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-    gmsh::option::setNumber("Mesh.SaveAll", 0);
-    gmsh::write(temporary);
-  });
+          gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+          gmsh::option::setNumber("Mesh.SaveAll", 0);
+          gmsh::write(temporary);
+        });
   }
   catch (...)
   {

@@ -17,13 +17,13 @@ namespace chipflex::meshes
 {
 struct BlockMeshSpec
 {
-  int dim = 2;                                ///< 2 or 3
-  std::array<double, 3> extent{0., 0., 0.};   ///< m, along x, y, z (z unused in 2D)
-  int long_axis = 1;                          ///< 0, 1 or 2: the clamp-tip axis
-  bool clamp_at_max = true;                   ///< clamp at the high end of the long axis
-  double size = 0.;                           ///< target element edge length, m
-  bool simplex = false;                       ///< triangles/tets (unstructured) instead of
-                                              ///< structured quads/hexes
+  int dim = 2;                              ///< 2 or 3
+  std::array<double, 3> extent{0., 0., 0.}; ///< m, along x, y, z (z unused in 2D)
+  int long_axis = 1;                        ///< 0, 1 or 2: the clamp-tip axis
+  bool clamp_at_max = true;                 ///< clamp at the high end of the long axis
+  double size = 0.;                         ///< target element edge length, m
+  bool simplex = false;                     ///< triangles/tets (unstructured) instead of
+                                            ///< structured quads/hexes
 };
 
 /// Meshes the block and writes it atomically to `path` (gmsh .msh 4.1).

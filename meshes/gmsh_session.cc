@@ -3,7 +3,6 @@
 #include "common/input_error.h"
 
 #include <gmsh.h>
-
 #include <mutex>
 #include <stdexcept>
 

@@ -140,6 +140,7 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
 
   std::vector<WallSurface<dim>> walls = c.walls;
   std::vector<Vector> tank_dummies;
+  std::vector<double> tank_rho;
   if (c.tank.enabled)
   {
     walls.insert(walls.begin(), tank_walls(c.tank));
@@ -155,7 +156,17 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
         for (int d = 0; d < dim; ++d)
           inside = inside && x[d] > c.tank.min[d] && x[d] < c.tank.max[d];
         if (!inside)
+        {
           tank_dummies.push_back(x);
+          // Walls start in hydrostatic balance with the fluid beside them (a wall at
+          // rho0 would let the column drop into it and start a pressure wave).
+          double depth = 0;
+          for (const auto& b : c.fluid_blocks)
+            depth = std::max(depth, b.max[up] - x[up]);
+          tank_rho.push_back(c.hydrostatic_start
+                               ? eos.density(p.reference_density * p.gravity.norm() * depth)
+                               : p.reference_density);
+        }
       });
     }
   }
@@ -177,7 +188,11 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
 
   auto solver = std::make_unique<FluidSolver<dim>>(p);
   for (std::size_t w = 0; w < walls.size(); ++w)
-    solver->add_wall(walls[w], (c.tank.enabled && w == 0) ? tank_dummies : std::vector<Vector>{});
+  {
+    const bool tank = c.tank.enabled && w == 0;
+    solver->add_wall(walls[w], tank ? tank_dummies : std::vector<Vector>{},
+                     tank ? tank_rho : std::vector<double>{});
+  }
   solver->add_fluid_particles(fluid_x, fluid_rho);
   return solver;
 }

@@ -46,7 +46,8 @@ void FluidSolver<dim>::add_fluid_particles(const std::vector<Vector>& x,
 
 template <int dim>
 int FluidSolver<dim>::add_wall(const WallSurface<dim>& wall,
-                               const std::vector<Vector>& dummy_positions)
+                               const std::vector<Vector>& dummy_positions,
+                               const std::vector<double>& dummy_densities)
 {
   if (set_up_)
     throw std::logic_error("FluidSolver: walls can only be added before the first step");
@@ -70,9 +71,14 @@ int FluidSolver<dim>::add_wall(const WallSurface<dim>& wall,
     const int layers = w.dummy_layers > 0 ? w.dummy_layers : int(std::ceil(2 * h_ / dp));
     const auto points =
       dummy_positions.empty() ? generate_dummy_particles(w, dp, layers) : dummy_positions;
-    for (const auto& x : points)
+    if (!dummy_densities.empty() && dummy_densities.size() != points.size())
+      throw std::invalid_argument("FluidSolver::add_wall: one density per dummy particle");
+    for (std::size_t k = 0; k < points.size(); ++k)
     {
+      const Vector& x = points[k];
       staged_boundary_x_.push_back(x);
+      staged_boundary_rho_.push_back(dummy_densities.empty() ? parameters_.reference_density
+                                                             : dummy_densities[k]);
       impl_->attachments.push_back(attach_to_wall(w, id, x));
     }
   }
@@ -111,7 +117,7 @@ void FluidSolver<dim>::finish_setup()
     const bool fluid = i >= nb;
     const Vector& x = fluid ? staged_fluid_x_[i - nb] : staged_boundary_x_[i];
     const Vector v = fluid ? staged_fluid_v_[i - nb] : Vector::Zero();
-    const float rho = fluid ? float(staged_fluid_rho_[i - nb]) : rho0;
+    const float rho = float(fluid ? staged_fluid_rho_[i - nb] : staged_boundary_rho_[i]);
     for (int d = 0; d < dim; ++d)
     {
       p.position[d][i] = x[d];
@@ -137,6 +143,7 @@ void FluidSolver<dim>::finish_setup()
   staged_fluid_v_ = {};
   staged_boundary_x_ = {};
   staged_fluid_rho_ = {};
+  staged_boundary_rho_ = {};
   impl_->setup(parameters_);
 }
 

@@ -84,8 +84,10 @@ public:
                            const std::vector<double>& densities = {},
                            const std::vector<Vector>& velocities = {});
   /// Adds a wall; returns its id. `dummy_positions` (dummy model only): use these
-  /// boundary particles (attached to the nearest faces) instead of generated layers.
-  int add_wall(const WallSurface<dim>& wall, const std::vector<Vector>& dummy_positions = {});
+  /// boundary particles (attached to the nearest faces) instead of generated layers;
+  /// `dummy_densities`: their initial densities (default rho0).
+  int add_wall(const WallSurface<dim>& wall, const std::vector<Vector>& dummy_positions = {},
+               const std::vector<double>& dummy_densities = {});
   void add_hook(HookPoint point, Hook hook);
   /// Ends the set-up: builds the particle arrays (boundary block first). Called by the
   /// first step(), save() or load(); call it yourself before reading particles of a
@@ -167,6 +169,6 @@ private:
   std::unique_ptr<Impl> impl_;
   // Staging before finish_setup().
   std::vector<Vector> staged_fluid_x_, staged_fluid_v_, staged_boundary_x_;
-  std::vector<double> staged_fluid_rho_;
+  std::vector<double> staged_fluid_rho_, staged_boundary_rho_;
 };
 } // namespace chipflex::sph

@@ -13,7 +13,8 @@ namespace chipflex::fem::testing
 {
 inline std::string scratch(const std::string& name)
 {
-  static const std::string folder = [] {
+  static const std::string folder = []
+  {
     std::string d = "fem_test_scratch_" + std::to_string(::getpid());
     std::system(("mkdir -p " + d).c_str());
     return d;
@@ -49,10 +50,9 @@ inline std::string strip_mesh(double length, double width, double thickness, dou
   spec.clamp_at_max = false;
   spec.size = size;
   spec.simplex = simplex;
-  const std::string path =
-    scratch("strip_" + std::to_string(length) + "_" + std::to_string(width) + "_" +
-            std::to_string(thickness) + "_" + std::to_string(size) + (simplex ? "_tet" : "") +
-            ".msh");
+  const std::string path = scratch("strip_" + std::to_string(length) + "_" + std::to_string(width) +
+                                   "_" + std::to_string(thickness) + "_" + std::to_string(size) +
+                                   (simplex ? "_tet" : "") + ".msh");
   meshes::write_block_mesh(spec, path);
   return path;
 }

@@ -26,9 +26,8 @@ void check_operators(const std::string& mesh_file, unsigned int degree)
   CHECK(symmetric == PETSC_TRUE);
   MatIsSymmetric(body.mass_matrix, 1e-13 * body.mass_matrix.linfty_norm(), &symmetric);
   CHECK(symmetric == PETSC_TRUE);
-  CHECK((body.scalar_mass_matrix - Eigen::SparseMatrix<double>(
-                                     body.scalar_mass_matrix.transpose()))
-          .norm() < 1e-14 * body.scalar_mass_matrix.norm());
+  CHECK((body.scalar_mass_matrix - Eigen::SparseMatrix<double>(body.scalar_mass_matrix.transpose()))
+            .norm() < 1e-14 * body.scalar_mass_matrix.norm());
 
   // Rigid modes: translations e_d and a rotation about z (x, y) -> (-y, x).
   const int n = body.n_nodes();
@@ -91,11 +90,11 @@ TEST_CASE("skin: closed, outward, through every boundary node", "[fem]")
     std::string mesh;
     double measure;
   };
-  const std::vector<Case> cases = {{gate_mesh(0.0025), 0.005 * 0.079},
-                                   {gate_mesh(0.0025, true), 0.005 * 0.079},
-                                   {strip_mesh(0.02, 0.006, 0.004, 0.002), 0.02 * 0.006 * 0.004},
-                                   {strip_mesh(0.02, 0.006, 0.004, 0.002, true),
-                                    0.02 * 0.006 * 0.004}};
+  const std::vector<Case> cases = {
+      {gate_mesh(0.0025), 0.005 * 0.079},
+      {gate_mesh(0.0025, true), 0.005 * 0.079},
+      {strip_mesh(0.02, 0.006, 0.004, 0.002), 0.02 * 0.006 * 0.004},
+      {strip_mesh(0.02, 0.006, 0.004, 0.002, true), 0.02 * 0.006 * 0.004}};
   for (const auto& c : cases)
     for (const unsigned int degree : {1u, 2u})
     {

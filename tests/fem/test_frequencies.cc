@@ -31,8 +31,7 @@ TEST_CASE("clamped 2D gate: first bending frequencies against Euler-Bernoulli", 
     CHECK(kind == "normal");
 }
 
-TEST_CASE("clamped 3D strip: bending frequencies in both planes against Euler-Bernoulli",
-          "[fem]")
+TEST_CASE("clamped 3D strip: bending frequencies in both planes against Euler-Bernoulli", "[fem]")
 {
   // Steel-like strip 100 x 4 x 2 mm, quadratic hexahedra of 1 mm. Bending about the thin
   // axis (I = w t^3/12) and about the wide axis (I = t w^3/12): ratio w/t = 2.

@@ -21,9 +21,8 @@ CompareResult reduce_and_compare(const std::string& mesh, unsigned int modes,
   s.clamp_group = "clamp";
   s.n_modes = modes;
   s.static_modes = std::move(static_modes);
-  const std::string body =
-    scratch("static_" + std::to_string(modes) + "_" + std::to_string(s.static_modes.size()) +
-            ".h5");
+  const std::string body = scratch("static_" + std::to_string(modes) + "_" +
+                                   std::to_string(s.static_modes.size()) + ".h5");
   write_reduced_body(body, reduce_body(s));
   CompareSettings c;
   c.mesh_file = mesh;
