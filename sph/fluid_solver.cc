@@ -111,7 +111,6 @@ void FluidSolver<dim>::finish_setup()
   const std::size_t nb = staged_boundary_x_.size(), nf = staged_fluid_x_.size();
   p.n_boundary = nb;
   p.resize(nb + nf, parameters_.scheme == TimeScheme::symplectic);
-  const float rho0 = float(parameters_.reference_density);
   for (std::size_t i = 0; i < nb + nf; ++i)
   {
     const bool fluid = i >= nb;

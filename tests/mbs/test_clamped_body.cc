@@ -157,3 +157,43 @@ TEST_CASE("A body held by fixed joints deflects like the ground-clamped body", "
   CHECK((a3 - b3).norm() <= 1e-9 * b3.norm());
   CHECK(b3.norm() > 0);
 }
+
+TEST_CASE("Rayleigh and modal damping give the damped-oscillator free decay",
+          "[mbs][ffrf][clamped]")
+{
+  // reference: q(t) = v0 / w_d exp(-zeta w t) sin(w_d t), w_d = w sqrt(1 - zeta^2), with
+  // zeta = alpha / (2 w) + beta w / 2 (Rayleigh) or the given modal ratio
+  TrussBeamSpec spec;
+  spec.n_cells = 8;
+  spec.n_modes = 1;
+  spec.bar_stiffness = 200;
+  const auto beam = make_truss_beam(spec);
+  const double w = std::sqrt(beam.body.stiffness_matrix(0, 0));
+  for (const DampingKind kind : {DampingKind::rayleigh, DampingKind::modal})
+  {
+    FloatingFrameOptions fo;
+    fo.damping = kind;
+    fo.rayleigh_mass = 0.1 * w;
+    fo.rayleigh_stiffness = 0.02 / w;
+    fo.modal_damping_ratio = 0.03;
+    const double zeta = kind == DampingKind::rayleigh ? 0.05 + 0.01 : 0.03;
+    IntegratorOptions opt;
+    opt.rho_infinity = 1;
+    MultibodySystem<2> system(opt);
+    system.add_body(std::make_unique<FloatingFrameBody<2>>(beam.body, fo));
+    auto& body = system.body(0);
+    body.clamp_to_ground();
+    body.set_modal_state(Eigen::VectorXd::Zero(1), Eigen::VectorXd::Constant(1, 1e-3));
+    const double wd = w * std::sqrt(1 - zeta * zeta);
+    const double h = 2 * M_PI / w / 2000;
+    double max_err = 0;
+    for (int s = 1; s <= 6000; ++s)
+    {
+      system.step(h);
+      const double t = s * h;
+      const double ref = 1e-3 / wd * std::exp(-zeta * w * t) * std::sin(wd * t);
+      max_err = std::max(max_err, std::abs(body.modal_coordinates()(0) - ref));
+    }
+    CHECK(max_err < 1e-5 * 1e-3 / w);
+  }
+}

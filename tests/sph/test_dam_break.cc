@@ -1,11 +1,12 @@
 // Dam break (validation): the DualSPHysics 2D geometry (a = 1 m wide, 2a high column,
 // n^2 = 2) against the surge-front measurements of Martin & Moyce (1952), Phil. Trans.
-// R. Soc. A 244, Table 2 / Fig. 3 (n^2 = 2), as tabulated by Koshizuka & Oka (1996):
-// Z = x_front / a against T = t sqrt(2 g / a). Inviscid SPH (like every published
-// SPH and MPS result) runs slightly ahead of the experiment, whose gate took time to
-// lift: the test accepts 12 % in Z over T in [1.4, 2.5] and 15 % in the front speed
-// dZ/dT; a missing pressure term, wrong gravity or wall friction fails it.
-
+// R. Soc. A 244, n^2 = 2 series, as tabulated by Koshizuka & Oka (1996):
+// Z = x_front / a against T = t sqrt(2 g / a).
+// The front speed dZ/dT over T in [1.4, 2.5] must match the experiment within 10 %.
+// The model, like published inviscid SPH/MPS results, leads the experiment, whose gate
+// needed time to lift: the lead, fitted as a time shift, must lie in [0, 0.35] in T,
+// and Z within 15 % of the experiment for T >= 1.8. No gravity, a missing pressure
+// term or excessive dissipation fail these.
 #include "sph/fluid_solver.h"
 #include "sph_test_cases.h"
 
@@ -61,16 +62,31 @@ TEST_CASE("dam break surge front follows Martin and Moyce 1952", "[sph][validati
       next_T += 0.1;
     }
   }
+  // Time lead of the model: T_experiment(Z_model) - T_model, averaged.
+  auto experiment_T = [](double Z) {
+    const int n = sizeof experiment / sizeof experiment[0];
+    for (int k = 0; k + 1 < n; ++k)
+      if (Z <= experiment[k + 1][1])
+        return experiment[k][0] + (Z - experiment[k][1]) / (experiment[k + 1][1] - experiment[k][1]) *
+                                    (experiment[k + 1][0] - experiment[k][0]);
+    return experiment[n - 1][0];
+  };
+  double lead = 0;
   for (const auto& [T, Z] : front)
   {
+    lead += experiment_T(Z) - T;
     INFO("T = " << T << ": Z = " << Z << ", experiment " << experiment_Z(T));
-    CHECK(std::abs(Z / experiment_Z(T) - 1) < 0.12);
+    if (T >= 1.8)
+      CHECK(std::abs(Z / experiment_Z(T) - 1) < 0.15);
   }
+  lead /= double(front.size());
   const double speed = (front.back().second - front.front().second) /
                        (front.back().first - front.front().first);
   const double measured =
     (experiment_Z(front.back().first) - experiment_Z(front.front().first)) /
     (front.back().first - front.front().first);
-  INFO("front speed dZ/dT = " << speed << ", experiment " << measured);
-  CHECK(std::abs(speed / measured - 1) < 0.15);
+  INFO("front speed dZ/dT = " << speed << ", experiment " << measured << "; lead " << lead);
+  CHECK(std::abs(speed / measured - 1) < 0.10);
+  CHECK(lead >= 0);
+  CHECK(lead <= 0.35);
 }
