@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <deal.II/base/mpi.h>
 #include <iomanip>
 #include <iostream>
@@ -90,6 +91,17 @@ int reduce_benchmark(const Arguments& args)
   settings.clamp_group = "clamp";
   settings.n_modes = modes;
   fem::ReductionTimings timings;
+  // CPU seconds as well as wall seconds: on a shared machine the wall time also measures
+  // the other jobs.
+  auto cpu_seconds = []
+  {
+    struct rusage u;
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+  };
+  double load[1] = {0};
+  getloadavg(load, 1);
+  const double cpu0 = cpu_seconds();
   t0 = clock::now();
   const ReducedBodyData body = fem::reduce_body(settings, &timings);
   const double reduction = std::chrono::duration<double>(clock::now() - t0).count();
@@ -97,6 +109,7 @@ int reduce_benchmark(const Arguments& args)
   if (rank == 0)
     write_reduced_body(body_file, body);
   const double writing = std::chrono::duration<double>(clock::now() - t0).count();
+  const double cpu = cpu_seconds() - cpu0;
   struct rusage usage;
   getrusage(RUSAGE_SELF, &usage);
   if (rank == 0)
@@ -117,6 +130,8 @@ int reduce_benchmark(const Arguments& args)
               << " s\n"
               << "  writing (HDF5)        " << writing << " s\n"
               << "  reduction total       " << reduction + writing << " s\n"
+              << "  CPU time (all threads) " << cpu << " s; load average at start " << load[0]
+              << " on " << sysconf(_SC_NPROCESSORS_ONLN) << " cores\n"
               << "  peak memory           " << usage.ru_maxrss / 1024.0 << " MiB (rank 0)\n"
               << std::setprecision(4) << "  f1 = " << body.frequencies_hz[0] << " Hz, f" << modes
               << " = " << body.frequencies_hz[modes - 1] << " Hz\n";

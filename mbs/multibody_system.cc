@@ -22,6 +22,7 @@ void MultibodySystem<dim>::set_options(const IntegratorOptions& options)
     throw InputError("integrator Newton options", "need >= 1 iteration and a positive tolerance");
   options_ = options;
   factored_h_ = -1;
+  refactor_next_ = true;
 }
 
 template <int dim>
@@ -153,6 +154,7 @@ void MultibodySystem<dim>::scatter(const Eigen::VectorXd& increment, const Eigen
 template <int dim>
 void MultibodySystem<dim>::factorize_kkt(double c_k, double c_d, bool with_tangent)
 {
+  factored_h_ = -1; // the caller marks a kept generalised-alpha matrix
   kkt_.topLeftCorner(nv_, nv_) = m_;
   if (with_tangent)
   {
@@ -230,7 +232,11 @@ void MultibodySystem<dim>::step_generalized_alpha(double h)
     vn_.segment(offsets_[i], bodies_[i]->n_velocities()) = bodies_[i]->velocities();
   }
   a1_ = a_;
-  const bool refactor = !linear_ || factored_h_ != h;
+  // A kept matrix must be for this step size; a nonlinear system refactorises when the
+  // last step needed many iterations (the matrix has gone stale) or reuse is off.
+  bool refactor =
+      factored_h_ != h || (!linear_ && (refactor_next_ || !options_.reuse_newton_matrix));
+  bool fresh = refactor;
   auto update_kinematics = [&]()
   {
     abar1_ = ((1 - af) * a1_ + af * a_ - am * abar_) / (1 - am);
@@ -238,6 +244,7 @@ void MultibodySystem<dim>::step_generalized_alpha(double h)
     incr_ = h * vn_ + (h * h * (0.5 - beta)) * abar_ + (h * h * beta) * abar1_;
     scatter(incr_, v1_);
   };
+  constexpr int stale_limit = 4; // iterations a kept matrix may need before it is renewed
   int it = 0;
   double last_correction = 0;
   for (;; ++it)
@@ -246,7 +253,7 @@ void MultibodySystem<dim>::step_generalized_alpha(double h)
       throw SimulationError("mbs: Newton did not converge at t = " + std::to_string(time_) +
                             " s (step " + std::to_string(h) + " s); reduce the step");
     update_kinematics();
-    if (!linear_ || (it == 0 && refactor))
+    if (!linear_ || refactor)
       assemble_mass_matrix();
     assemble_forces();
     if (nc_ > 0)
@@ -266,10 +273,14 @@ void MultibodySystem<dim>::step_generalized_alpha(double h)
       rhs_.head(nv_) -= delta_;
       rhs_.tail(nc_) = -g_ / beta_p;
     }
-    if (it == 0 && refactor)
+    if (!fresh && it == stale_limit)
+      refactor = true; // the kept matrix converges too slowly: refresh it at this iterate
+    if (refactor)
     {
       factorize_kkt(beta_p, gamma_p, true);
-      factored_h_ = linear_ ? h : -1;
+      factored_h_ = h;
+      refactor = false;
+      fresh = true;
     }
     sol_ = lu_.solve(rhs_);
     a1_ += sol_.head(nv_);
@@ -286,6 +297,7 @@ void MultibodySystem<dim>::step_generalized_alpha(double h)
   }
   update_kinematics();
   last_iterations_ = it + 1;
+  refactor_next_ = last_iterations_ > stale_limit;
   a_ = a1_;
   abar_ = abar1_;
 }

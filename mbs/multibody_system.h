@@ -9,8 +9,8 @@
 // unknowns of Newton's method are the accelerations and multipliers. The Newton matrix
 //     [ M + gamma' D_t + beta' K_t   G^T ]     beta' = h^2 beta (1-af)/(1-am)
 //     [ G                            0   ]     gamma' = h gamma (1-af)/(1-am)
-// is formed once per step (K_t, D_t: elastic, damping and spring parts; the derivatives
-// of the quadratic velocity vector and of G^T lambda are left out, so Newton converges
+// is formed once per step or less often (K_t, D_t: elastic, damping and spring parts; the
+// derivatives of the quadratic velocity vector and of G^T lambda are left out, so Newton converges
 // linearly for fast rotation) and reused across the iterations. A linear system (bodies
 // clamped to ground, no joints) is solved exactly in one iteration with a factorisation
 // kept across steps. rho_infinity = 1 has no numerical dissipation (the trapezoidal
@@ -50,6 +50,10 @@ struct IntegratorOptions
   double rho_infinity = 0.9;       ///< spectral radius at infinite frequency, 0..1
   double newton_tolerance = 1e-10; ///< on the acceleration correction, relative
   int max_newton_iterations = 50;
+  /// Keep the Newton matrix across steps of equal size while Newton converges in a few
+  /// iterations (refactorised when it needs more); the residual is always exact, so this
+  /// changes the convergence rate only, never the solution.
+  bool reuse_newton_matrix = true;
 };
 
 template <int dim>
@@ -121,7 +125,8 @@ private:
   bool initialized_ = false;
   Eigen::VectorXd a_, abar_, lambda_;
   int last_iterations_ = 0;
-  double factored_h_ = -1; ///< step of the kept factorisation of a linear system
+  double factored_h_ = -1; ///< step of the kept factorisation (-1: none)
+  bool refactor_next_ = true;
 
   // preallocated work space (no allocation inside step() once set up)
   Eigen::MatrixXd m_, g_jac_, kkt_;

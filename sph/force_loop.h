@@ -124,7 +124,9 @@ float particle_pass(const ForcePassInput<dim>& in, const Viscosity& visc, const 
                     std::size_t first, std::size_t last)
 {
   float dot_rr2_max = 0;
-#pragma omp parallel for schedule(static) reduction(max : dot_rr2_max) if (last - first > parallel_threshold)
+  // Dynamic chunks: each particle's sums do not depend on which thread computes them,
+  // and a thread descheduled on a busy machine does not hold the others at the barrier.
+#pragma omp parallel for schedule(dynamic, 256) reduction(max : dot_rr2_max) if (last - first > parallel_threshold)
   for (std::size_t i = first; i < last; ++i)
   {
     double xi[3] = {in.x[0][i], in.x[1][i], dim == 3 ? in.x[dim - 1][i] : 0.0};
