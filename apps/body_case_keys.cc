@@ -61,6 +61,12 @@ void declare_body(ParameterHandler& prm)
   prm.declare_entry("rayleigh stiffness", "0", Double(0), "Flexible: Rayleigh beta, s.");
   prm.declare_entry("probe set", "tip", Anything(),
                     "Flexible: node set whose mean is the probe (displacement output).");
+  prm.declare_entry("clamp set", "clamp", Anything(),
+                    "Flexible with large rotation: the node set at the clamped end.");
+  prm.declare_entry("large rotation", "false", Bool(),
+                    "Flexible, clamped beam: rebuild the skin inextensibly from the linear "
+                    "rotation field (coupling/large_rotation_beam_skin.h), so that large "
+                    "deflections foreshorten the beam.");
   prm.declare_entry("youngs modulus", "1.2e7", Double(0), "SPH solid: E, Pa (Table 1).");
   prm.declare_entry("poisson ratio", "0.4", Double(-1, 0.5), "SPH solid: nu, - (Table 1).");
   prm.declare_entry("artificial stress", "0.2", Double(0), "SPH solid: epsilon (Table 1).");
@@ -177,6 +183,8 @@ BodyCase read_body_case(ParameterHandler& prm, const std::string& case_path)
     d.rayleigh_mass = prm.get_double("rayleigh mass");
     d.rayleigh_stiffness = prm.get_double("rayleigh stiffness");
     d.probe_set = prm.get("probe set");
+    d.clamp_set = prm.get("clamp set");
+    d.large_rotation = prm.get_bool("large rotation");
     d.solid.density = d.density;
     d.solid.youngs_modulus = prm.get_double("youngs modulus");
     d.solid.poisson_ratio = prm.get_double("poisson ratio");

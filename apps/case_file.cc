@@ -3,7 +3,6 @@
 #include "common/input_error.h"
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <fstream>
 #include <sstream>
 
@@ -192,18 +191,17 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c)
   f.artificial_viscosity = prm.get_double("artificial viscosity");
   f.kinematic_viscosity = prm.get_double("kinematic viscosity");
   const std::string diffusion = prm.get("density diffusion");
-  f.density_diffusion = diffusion == "none" ? sph::DensityDiffusionModel::none
-                        : diffusion == "fourtakas"
-                          ? sph::DensityDiffusionModel::fourtakas
-                          : sph::DensityDiffusionModel::molteni_colagrossi;
+  f.density_diffusion = diffusion == "none"        ? sph::DensityDiffusionModel::none
+                        : diffusion == "fourtakas" ? sph::DensityDiffusionModel::fourtakas
+                                                   : sph::DensityDiffusionModel::molteni_colagrossi;
   f.density_diffusion_delta = prm.get_double("density diffusion delta");
   c.hydrostatic_start = prm.get_bool("hydrostatic start");
   prm.leave_subsection();
 
   prm.enter_subsection("time");
   c.end_time = prm.get_double("end time");
-  f.scheme = prm.get("scheme") == "symplectic" ? sph::TimeScheme::symplectic
-                                               : sph::TimeScheme::verlet;
+  f.scheme =
+      prm.get("scheme") == "symplectic" ? sph::TimeScheme::symplectic : sph::TimeScheme::verlet;
   f.cfl = prm.get_double("cfl");
   f.verlet_euler_every = prm.get_integer("verlet euler every");
   f.minimum_time_step = prm.get_double("minimum time step");

@@ -9,7 +9,7 @@ namespace chipflex::apps
 {
 template <int dim>
 FluidSimulation<dim>::FluidSimulation(const sph::CaseDescription<dim>& description)
-  : description_(description), fluid_(sph::build_fluid(description_))
+    : description_(description), fluid_(sph::build_fluid(description_))
 {
 }
 

@@ -94,11 +94,11 @@ void ParticleOutput::write_xdmf() const
          "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (const auto& f : frames_)
     {
-      auto item = [&](const std::string& set, int components, const char* type, int bytes) {
+      auto item = [&](const std::string& set, int components, const char* type, int bytes)
+      {
         std::string dims = std::to_string(f.n) + (components > 1 ? " 3" : "");
-        return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + type +
-               "\" Precision=\"" + std::to_string(bytes) + "\" Format=\"HDF\">" + f.file +
-               ":/" + set + "</DataItem>";
+        return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + type + "\" Precision=\"" +
+               std::to_string(bytes) + "\" Format=\"HDF\">" + f.file + ":/" + set + "</DataItem>";
       };
       x << "   <Grid Name=\"frame\" GridType=\"Uniform\">\n"
         << "    <Time Value=\"" << f.time << "\"/>\n"

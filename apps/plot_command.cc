@@ -70,7 +70,7 @@ std::string find_data_folder(const std::string& given)
       throw InputError("--data", "'" + given + "' is not a folder");
     return given;
   }
-  for (const std::string candidate :
+  for (const std::string& candidate :
        {std::string("data/antoci2007"), std::string(CHIPFLEX_PLOT_DATA_DIR)})
     if (fs::is_directory(candidate))
       return candidate;
@@ -93,6 +93,7 @@ int plot_command(const Arguments& args)
   // The parser takes one positional; the further runs are split off here (every
   // option but --help takes a value).
   std::vector<std::string> runs, rest;
+  bool first_run_seen = false;
   for (std::size_t i = 0; i < args.size(); ++i)
   {
     const std::string& a = args[i];
@@ -102,11 +103,11 @@ int plot_command(const Arguments& args)
       if (a != "--help" && a != "-h" && a.find('=') == std::string::npos && i + 1 < args.size())
         rest.push_back(args[++i]);
     }
-    else if (std::find(rest.begin(), rest.end(), a) == rest.end() && runs.empty() &&
-             std::none_of(rest.begin(), rest.end(), [](const std::string& r) {
-               return r.rfind("-", 0) != 0;
-             }))
+    else if (!first_run_seen)
+    {
       rest.push_back(a); // the first run: the declared positional
+      first_run_seen = true;
+    }
     else
       runs.push_back(a);
   }

@@ -9,7 +9,7 @@
 namespace chipflex::apps
 {
 ProbeOutput::ProbeOutput(std::string path, std::vector<std::string> columns)
-  : path_(std::move(path)), columns_(std::move(columns))
+    : path_(std::move(path)), columns_(std::move(columns))
 {
 }
 

@@ -123,8 +123,8 @@ int reduce_command(const Arguments& args)
     std::cout << std::setprecision(3) << "seconds: mesh " << timings.mesh_reading << ", setup "
               << timings.setup << ", assembly " << timings.assembly << ", factorisation "
               << timings.factorisation << ", eigen solve " << timings.eigen_solve
-              << ", static modes " << timings.static_modes << ", invariants "
-              << timings.post_processing << "\n";
+              << ", static modes " << timings.static_modes << ", basis " << timings.basis
+              << ", invariants " << timings.post_processing << "\n";
   }
   return 0;
 }

@@ -126,8 +126,7 @@ int reduce_benchmark(const Arguments& args)
               << "  assembly (K, M, Ms)   " << timings.assembly << " s\n"
               << "  factorisation (MUMPS) " << timings.factorisation << " s\n"
               << "  eigen solve (SLEPc)   " << timings.eigen_solve << " s\n"
-              << "  basis and invariants  " << timings.post_processing + timings.static_modes
-              << " s\n"
+              << "  basis and invariants  " << timings.basis + timings.post_processing << " s\n"
               << "  writing (HDF5)        " << writing << " s\n"
               << "  reduction total       " << reduction + writing << " s\n"
               << "  CPU time (all threads) " << cpu << " s; load average at start " << load[0]

@@ -9,11 +9,10 @@
 #include "bench/benchmarks.h"
 #include "sph/case_setup.h"
 
-#include <omp.h>
-
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <omp.h>
 
 namespace chipflex::bench
 {
@@ -59,13 +58,13 @@ int sph_dambreak2d_benchmark(const Arguments& args)
   while (fluid->time() < end_time)
     fluid->step();
   const double seconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const std::int64_t steps = fluid->step_count() - first_step;
   const double n = double(fluid->n_particles());
   std::printf("case=DualSPHysics CaseDambreakVal2D (dp %g m, t = %g s)\n", p.particle_spacing,
               fluid->time());
-  std::printf("particles=%zu (fluid %zu, boundary %zu)\n", fluid->n_particles(),
-              fluid->n_fluid(), fluid->n_boundary());
+  std::printf("particles=%zu (fluid %zu, boundary %zu)\n", fluid->n_particles(), fluid->n_fluid(),
+              fluid->n_boundary());
   std::printf("steps=%lld\n", static_cast<long long>(steps));
   std::printf("threads=%d\n", omp_get_max_threads());
   std::printf("seconds=%.3f\n", seconds);

@@ -59,6 +59,10 @@ struct BodyDescription
   double modal_damping = 0;      ///< zeta of every mode
   double rayleigh_mass = 0, rayleigh_stiffness = 0; ///< alpha (1/s), beta (s)
   std::string probe_set = "tip"; ///< node set whose mean is the probe
+  /// Clamped beam-like body: rebuild the skin with large-rotation kinematics from the
+  /// linear rotation field (large_rotation_beam_skin.h); needs `clamp_set`, probe_set.
+  bool large_rotation = false;
+  std::string clamp_set = "clamp";
 
   // ---- sph solid (Table 1 defaults)
   sph::SolidMaterial solid;

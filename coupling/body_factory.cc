@@ -2,6 +2,7 @@
 
 #include "common/input_error.h"
 #include "common/reduced_body_file.h"
+#include "coupling/large_rotation_beam_skin.h"
 #include "coupling/multibody_coupled_body.h"
 #include "coupling/sph_solid_body.h"
 #include "mbs/composite_skin.h"
@@ -169,6 +170,16 @@ std::unique_ptr<CoupledBody<2>> make_flexible(const BodyDescription& d, const Ve
     body->clamp_to_ground();
   auto* skin = body.get();
   system->add_body(std::move(body));
+  if (d.large_rotation)
+  {
+    if (!d.clamped)
+      throw InputError("body '" + d.name + "', large rotation", "needs a clamped body");
+    auto beam = std::make_unique<LargeRotationBeamSkin>(*skin, d.clamp_set, d.probe_set);
+    const LargeRotationBeamSkin* probe_skin = beam.get();
+    return std::make_unique<MultibodyCoupledBody<2>>(
+      "flexible", std::move(system), std::move(beam), d.max_step,
+      [probe_skin](const mbs::MultibodySystem<2>&) { return probe_skin->tip_position(); });
+  }
   return std::make_unique<MultibodyCoupledBody<2>>(
     "flexible", std::move(system), *skin, d.max_step,
     [probe](const mbs::MultibodySystem<2>& s) {

@@ -58,8 +58,10 @@ void ModalReduction<dim>::run(ReductionTimings& timings)
   const auto t0 = std::chrono::steady_clock::now();
   compute_static_modes(timings);
   timings.static_modes = seconds_since(t0);
+  const auto t1 = std::chrono::steady_clock::now();
   orthonormalise_and_fix_signs();
   compute_reduced_stiffness();
+  timings.basis = seconds_since(t1);
 }
 
 // Translations and rotations about the centre of mass, M-orthonormalised.
@@ -199,19 +201,24 @@ void ModalReduction<dim>::compute_static_modes(ReductionTimings&)
 template <int dim>
 void ModalReduction<dim>::orthonormalise_and_fix_signs()
 {
-  std::vector<Eigen::VectorXd> columns;
+  // Modified Gram-Schmidt in the M inner product, twice ("twice is enough"). Keeping M c
+  // for every accepted column c makes each projection a dot product: one mass product per
+  // column instead of one per projection (m^2 of them cost 45 s at 350k DoFs).
+  std::vector<Eigen::VectorXd> columns, mass_columns;
   kinds.clear();
   auto add = [&](Eigen::VectorXd v, const std::string& kind)
   {
     const double original = std::sqrt(v.dot(apply_mass(v)));
     for (int pass = 0; pass < 2; ++pass)
-      for (const auto& c : columns)
-        v -= c * c.dot(apply_mass(v));
-    const double norm = std::sqrt(v.dot(apply_mass(v)));
+      for (std::size_t j = 0; j < columns.size(); ++j)
+        v -= columns[j] * mass_columns[j].dot(v);
+    Eigen::VectorXd mv = apply_mass(v);
+    const double norm = std::sqrt(v.dot(mv));
     if (!(norm > 1e-8 * original))
       throw InputError("--static-modes " + kind.substr(7),
                        "adds nothing to the modes before it (linearly dependent)");
     v /= norm;
+    mv /= norm;
     // Sign: the first (lowest row) entry within 1e-6 of the largest magnitude is positive;
     // the tolerance keeps mirror-symmetric ties from flipping with round-off.
     const double largest = v.cwiseAbs().maxCoeff();
@@ -219,10 +226,14 @@ void ModalReduction<dim>::orthonormalise_and_fix_signs()
       if (std::abs(v[i]) >= (1 - 1e-6) * largest)
       {
         if (v[i] < 0)
+        {
           v = -v;
+          mv = -mv;
+        }
         break;
       }
-    columns.push_back(v);
+    columns.push_back(std::move(v));
+    mass_columns.push_back(std::move(mv));
     kinds.push_back(kind);
   };
   for (const auto& phi : normal)

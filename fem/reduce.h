@@ -27,7 +27,7 @@ struct ReductionSettings
 struct ReductionTimings
 {
   double mesh_reading = 0, setup = 0, assembly = 0, factorisation = 0, eigen_solve = 0,
-         static_modes = 0, post_processing = 0;
+         static_modes = 0, basis = 0, post_processing = 0;
   std::size_t n_dofs = 0, n_cells = 0;
 };
 

@@ -4,7 +4,6 @@
 #include "sph/tait_equation_of_state.h"
 
 #include <Eigen/Geometry>
-
 #include <cmath>
 
 namespace chipflex::sph
@@ -50,8 +49,8 @@ WallSurface<dim> tank_walls(const TankDescription<dim>& tank)
         const int u = (axis + 1) % 3, v = (axis + 2) % 3;
         auto corner = [&](int i, int j) { return (side << axis) | (i << u) | (j << v); };
         std::array<int, 4> q = {corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)};
-        const Vector n = (w.vertices[q[1]] - w.vertices[q[0]])
-                           .cross(w.vertices[q[2]] - w.vertices[q[0]]);
+        const Vector n =
+            (w.vertices[q[1]] - w.vertices[q[0]]).cross(w.vertices[q[2]] - w.vertices[q[0]]);
         const double inward = side == 0 ? 1 : -1;
         if (n[axis] * inward < 0)
           std::swap(q[1], q[3]);
@@ -129,13 +128,15 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
   for (const auto& b : c.fluid_blocks)
   {
     const Vector origin = c.tank.enabled ? c.tank.min : b.min;
-    lattice<dim>(b.min, b.max, origin, dp, [&](const Vector& x) {
-      fluid_x.push_back(x);
-      const double depth = b.max[up] - x[up];
-      fluid_rho.push_back(c.hydrostatic_start
-                            ? eos.density(p.reference_density * p.gravity.norm() * depth)
-                            : p.reference_density);
-    });
+    lattice<dim>(b.min, b.max, origin, dp,
+                 [&](const Vector& x)
+                 {
+                   fluid_x.push_back(x);
+                   const double depth = b.max[up] - x[up];
+                   fluid_rho.push_back(c.hydrostatic_start ? eos.density(p.reference_density *
+                                                                         p.gravity.norm() * depth)
+                                                           : p.reference_density);
+                 });
   }
 
   std::vector<WallSurface<dim>> walls = c.walls;
@@ -147,27 +148,30 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
     if (c.tank.model == WallModel::dummy_particles)
     {
       const int layers =
-        c.tank.layers > 0 ? c.tank.layers : int(std::ceil(2 * p.smoothing_length() / dp));
+          c.tank.layers > 0 ? c.tank.layers : int(std::ceil(2 * p.smoothing_length() / dp));
       Vector lo = c.tank.min.array() - layers * dp, hi = c.tank.max.array() + layers * dp;
       if (c.tank.open_top)
         hi[up] = c.tank.max[up];
-      lattice<dim>(lo, hi, c.tank.min, dp, [&](const Vector& x) {
-        bool inside = true;
-        for (int d = 0; d < dim; ++d)
-          inside = inside && x[d] > c.tank.min[d] && x[d] < c.tank.max[d];
-        if (!inside)
-        {
-          tank_dummies.push_back(x);
-          // Walls start in hydrostatic balance with the fluid beside them (a wall at
-          // rho0 would let the column drop into it and start a pressure wave).
-          double depth = 0;
-          for (const auto& b : c.fluid_blocks)
-            depth = std::max(depth, b.max[up] - x[up]);
-          tank_rho.push_back(c.hydrostatic_start
+      lattice<dim>(lo, hi, c.tank.min, dp,
+                   [&](const Vector& x)
+                   {
+                     bool inside = true;
+                     for (int d = 0; d < dim; ++d)
+                       inside = inside && x[d] > c.tank.min[d] && x[d] < c.tank.max[d];
+                     if (!inside)
+                     {
+                       tank_dummies.push_back(x);
+                       // Walls start in hydrostatic balance with the fluid beside them (a wall at
+                       // rho0 would let the column drop into it and start a pressure wave).
+                       double depth = 0;
+                       for (const auto& b : c.fluid_blocks)
+                         depth = std::max(depth, b.max[up] - x[up]);
+                       tank_rho.push_back(
+                           c.hydrostatic_start
                                ? eos.density(p.reference_density * p.gravity.norm() * depth)
                                : p.reference_density);
-        }
-      });
+                     }
+                   });
     }
   }
 

@@ -9,20 +9,22 @@
 namespace chipflex::sph
 {
 template <int dim>
-std::vector<Eigen::Matrix<double, dim, 1>>
-generate_dummy_particles(const WallSurface<dim>& wall, double dp, int layers)
+std::vector<Eigen::Matrix<double, dim, 1>> generate_dummy_particles(const WallSurface<dim>& wall,
+                                                                    double dp, int layers)
 {
   using Vector = Eigen::Matrix<double, dim, 1>;
   std::vector<Vector> points;
   // Hash on a dp/2 lattice to drop near-duplicates where layers of faces overlap.
   std::map<std::array<long, dim>, std::vector<std::size_t>> buckets;
-  auto key = [&](const Vector& x) {
+  auto key = [&](const Vector& x)
+  {
     std::array<long, dim> k;
     for (int d = 0; d < dim; ++d)
       k[d] = long(std::floor(x[d] / dp));
     return k;
   };
-  auto add = [&](const Vector& x) {
+  auto add = [&](const Vector& x)
+  {
     const auto k = key(x);
     for (int i = 0; i < (dim == 2 ? 9 : 27); ++i)
     {
@@ -87,8 +89,8 @@ WallAttachment<dim> attach_to_wall(const WallSurface<dim>& wall, std::uint32_t w
     double outside = 0;
     for (double w : p.weights)
       outside += std::max(0.0, -w);
-    const double score = std::abs(p.distance) + 1e3 * outside * (p.inside ? 0 : 1) +
-                         (p.inside ? 0 : 1e-9);
+    const double score =
+        std::abs(p.distance) + 1e3 * outside * (p.inside ? 0 : 1) + (p.inside ? 0 : 1e-9);
     if (score < best_score)
     {
       best_score = score;
@@ -113,9 +115,9 @@ void attached_state(const WallSurface<dim>& wall, const WallAttachment<dim>& a,
 }
 
 template std::vector<Eigen::Matrix<double, 2, 1>> generate_dummy_particles(const WallSurface<2>&,
-                                                                         double, int);
+                                                                           double, int);
 template std::vector<Eigen::Matrix<double, 3, 1>> generate_dummy_particles(const WallSurface<3>&,
-                                                                         double, int);
+                                                                           double, int);
 template WallAttachment<2> attach_to_wall(const WallSurface<2>&, std::uint32_t,
                                           const Eigen::Matrix<double, 2, 1>&);
 template WallAttachment<3> attach_to_wall(const WallSurface<3>&, std::uint32_t,

@@ -27,8 +27,8 @@ struct WallAttachment
 /// Layers at offsets -(l + 1/2) dp behind every face (l < layers), dp apart along the
 /// face; points closer than dp/2 to an earlier one (convex corners) are dropped.
 template <int dim>
-std::vector<Eigen::Matrix<double, dim, 1>>
-generate_dummy_particles(const WallSurface<dim>& wall, double dp, int layers);
+std::vector<Eigen::Matrix<double, dim, 1>> generate_dummy_particles(const WallSurface<dim>& wall,
+                                                                    double dp, int layers);
 
 /// Attaches a point to the face whose plane it is nearest to among the faces its
 /// foot point falls on (or, failing that, the nearest face centre).

@@ -14,8 +14,8 @@ namespace chipflex::sph
 {
 template <int dim>
 FluidSolver<dim>::FluidSolver(const FluidParameters<dim>& parameters)
-  : parameters_(parameters), mass_(parameters.particle_mass()), h_(parameters.smoothing_length()),
-    impl_(std::make_unique<Impl>())
+    : parameters_(parameters), mass_(parameters.particle_mass()), h_(parameters.smoothing_length()),
+      impl_(std::make_unique<Impl>())
 {
   const auto& p = parameters_;
   if (!(p.particle_spacing > 0) || !(p.reference_density > 0) || !(p.speed_of_sound > 0) ||
@@ -64,13 +64,13 @@ int FluidSolver<dim>::add_wall(const WallSurface<dim>& wall,
   const double dp = parameters_.particle_spacing;
   if (w.model == WallModel::lennard_jones)
     w.lennard_jones = derive_lennard_jones(
-      w.lennard_jones, dp, parameters_.reference_density,
-      parameters_.reference_density * std::pow(0.1 * parameters_.speed_of_sound, 2), w.name);
+        w.lennard_jones, dp, parameters_.reference_density,
+        parameters_.reference_density * std::pow(0.1 * parameters_.speed_of_sound, 2), w.name);
   else if (!w.fluid_passes)
   {
     const int layers = w.dummy_layers > 0 ? w.dummy_layers : int(std::ceil(2 * h_ / dp));
     const auto points =
-      dummy_positions.empty() ? generate_dummy_particles(w, dp, layers) : dummy_positions;
+        dummy_positions.empty() ? generate_dummy_particles(w, dp, layers) : dummy_positions;
     if (!dummy_densities.empty() && dummy_densities.size() != points.size())
       throw std::invalid_argument("FluidSolver::add_wall: one density per dummy particle");
     for (std::size_t k = 0; k < points.size(); ++k)
@@ -205,8 +205,8 @@ void FluidSolver<dim>::fail(std::size_t i, const std::string& problem) const
 {
   std::ostringstream s;
   s.precision(6);
-  s << "step " << step_ << ", t = " << time_ << " s: "
-    << (kind(i) == ParticleKind::fluid ? "fluid" : "boundary") << " particle "
+  s << "step " << step_ << ", t = " << time_
+    << " s: " << (kind(i) == ParticleKind::fluid ? "fluid" : "boundary") << " particle "
     << particles_.id[i] << " at (";
   for (int d = 0; d < dim; ++d)
     s << (d ? ", " : "") << particles_.position[d][i];
@@ -349,7 +349,7 @@ void FluidSolver<dim>::correct_symplectic(double dt)
       const float v = p.velocity_previous[d][i] + float(dt) * p.acceleration[d][i];
       p.velocity[d][i] = v;
       p.position[d][i] =
-        p.position_previous[d][i] + 0.5 * dt * (double(p.velocity_previous[d][i]) + double(v));
+          p.position_previous[d][i] + 0.5 * dt * (double(p.velocity_previous[d][i]) + double(v));
     }
   }
 }

@@ -90,8 +90,8 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
   if (std::size_t(file.read_integer_attribute(group, "n_particles")) != n ||
       std::size_t(file.read_integer_attribute(group, "n_boundary")) != p.n_boundary)
     throw InputError(where, "checkpoint has a different particle count than the case (" +
-                              std::to_string(n) + " particles, " +
-                              std::to_string(p.n_boundary) + " boundary)");
+                                std::to_string(n) + " particles, " + std::to_string(p.n_boundary) +
+                                " boundary)");
   if (file.exists(group + "/position_previous") != !p.position_previous[0].empty())
     throw InputError(where, "checkpoint was written with another time scheme");
   time_ = file.read_double_attribute(group, "time");

@@ -16,8 +16,7 @@ float run_pass(const ForcePassInput<dim>& in, const PairPolicies& policies, std:
 {
   const auto& visc = policies.get<Viscosity>();
   const auto& diff = policies.get<Diffusion>();
-  boundary_force_pass<dim>(in, visc, diff, 0, nb);
-  return fluid_force_pass<dim>(in, visc, diff, nb, n);
+  return force_pass<dim>(in, visc, diff, nb, n);
 }
 
 template <int dim, class Viscosity>
@@ -50,10 +49,10 @@ void FluidSolver<dim>::Impl::setup(const FluidParameters<dim>& p)
   policies.fourtakas.two_delta_h_c0 = two_delta_h_c0;
   for (int d = 0; d < 3; ++d)
     policies.fourtakas.g_over_c2[d] =
-      d < dim ? float(p.reference_density * p.gravity[d] / (c0 * c0)) : 0.0f;
+        d < dim ? float(p.reference_density * p.gravity[d] / (c0 * c0)) : 0.0f;
   pass = p.viscosity == ViscosityModel::artificial
-           ? select_diffusion<dim, ArtificialViscosity>(p.density_diffusion)
-           : select_diffusion<dim, LaminarViscosity>(p.density_diffusion);
+             ? select_diffusion<dim, ArtificialViscosity>(p.density_diffusion)
+             : select_diffusion<dim, LaminarViscosity>(p.density_diffusion);
 }
 
 template <int dim>

@@ -44,9 +44,8 @@ namespace detail
 {
 template <int dim, bool neighbour_is_fluid, class Viscosity, class Diffusion>
 inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
-                   std::uint32_t jb, std::uint32_t je, const double (&xi)[3],
-                   const float (&vi)[3], float rhoi, float pti, float mj, float (&acc)[4],
-                   float& dot_rr2_max)
+                   std::uint32_t jb, std::uint32_t je, const double (&xi)[3], const float (&vi)[3],
+                   float rhoi, float pti, float mj, float (&acc)[4], float& dot_rr2_max)
 {
   const double* const x0 = in.x[0];
   const double* const x1 = in.x[1];
@@ -119,15 +118,15 @@ inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const D
   dot_rr2_max = vmax;
 }
 
+/// Gathers for particles [first, last); call inside a parallel region (orphaned `omp
+/// for`). Dynamic chunks: each particle's sums do not depend on which thread computes
+/// them, and a thread descheduled on a busy machine does not hold the others up.
 template <int dim, bool target_is_fluid, class Viscosity, class Diffusion>
-float particle_pass(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
+float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
                     std::size_t first, std::size_t last)
 {
-  float dot_rr2_max = 0;
-  // Dynamic chunks: each particle's sums do not depend on which thread computes them,
-  // and a thread descheduled on a busy machine does not hold the others at the barrier.
-#pragma omp parallel for schedule(dynamic, 256) reduction(max : dot_rr2_max) if (last - first > parallel_threshold)
-  for (std::size_t i = first; i < last; ++i)
+  float dot_rr2_max = 0; // this thread's maximum
+  auto one = [&](std::size_t i)
   {
     double xi[3] = {in.x[0][i], in.x[1][i], dim == 3 ? in.x[dim - 1][i] : 0.0};
     float vi[3] = {in.v[0][i], in.v[1][i], dim == 3 ? in.v[dim - 1][i] : 0.0f};
@@ -141,33 +140,48 @@ float particle_pass(const ForcePassInput<dim>& in, const Viscosity& visc, const 
       gather<dim, true>(in, visc, diff, in.fluid_start[base], in.fluid_start[base + 3], xi, vi,
                         rhoi, pti, in.mass_fluid, acc, vmax);
       if constexpr (target_is_fluid)
-        gather<dim, false>(in, visc, diff, in.boundary_start[base], in.boundary_start[base + 3],
-                           xi, vi, rhoi, pti, in.mass_boundary, acc, vmax);
+        gather<dim, false>(in, visc, diff, in.boundary_start[base], in.boundary_start[base + 3], xi,
+                           vi, rhoi, pti, in.mass_boundary, acc, vmax);
     }
     for (int d = 0; d < dim; ++d)
       in.a[d][i] = acc[d];
     in.density_rate[i] = acc[3];
     dot_rr2_max = std::max(dot_rr2_max, vmax);
+  };
+  // Boundary results are not read by the fluid loop: no barrier between the two.
+  if constexpr (target_is_fluid)
+  {
+#pragma omp for schedule(dynamic, 256)
+    for (std::size_t i = first; i < last; ++i)
+      one(i);
+  }
+  else
+  {
+#pragma omp for schedule(dynamic, 256) nowait
+    for (std::size_t i = first; i < last; ++i)
+      one(i);
   }
   return dot_rr2_max;
 }
 } // namespace detail
 
-/// Fluid particles [first, last): accelerations (without gravity and walls) and density
-/// rates. Returns max v_ij.r_ij/(r^2+eta2) for the time step.
+/// One force pass in ONE parallel region (one barrier per pass matters on a busy
+/// machine): boundary particles [0, n_boundary) get their density rates and the fluid's
+/// reaction per unit mass (no density diffusion, as in DualSPHysics); fluid particles
+/// [n_boundary, n) their accelerations (without gravity and walls) and density rates.
+/// Returns max v_ij.r_ij/(r^2+eta2) over candidate pairs, for the time step.
 template <int dim, class Viscosity, class Diffusion>
-float fluid_force_pass(const ForcePassInput<dim>& in, const Viscosity& visc,
-                       const Diffusion& diff, std::size_t first, std::size_t last)
+float force_pass(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
+                 std::size_t n_boundary, std::size_t n)
 {
-  return detail::particle_pass<dim, true>(in, visc, diff, first, last);
-}
-
-/// Boundary particles [first, last): density rates and fluid reaction per unit mass.
-template <int dim, class Viscosity, class Diffusion>
-void boundary_force_pass(const ForcePassInput<dim>& in, const Viscosity& visc,
-                         const Diffusion&, std::size_t first, std::size_t last)
-{
-  // Boundary particles take no density diffusion (as in DualSPHysics).
-  detail::particle_pass<dim, false>(in, visc, NoDensityDiffusion{}, first, last);
+  float dot_rr2_max = 0;
+#pragma omp parallel if (n > parallel_threshold)
+  {
+    detail::particle_loop<dim, false>(in, visc, NoDensityDiffusion{}, 0, n_boundary);
+    const float m = detail::particle_loop<dim, true>(in, visc, diff, n_boundary, n);
+#pragma omp critical(chipflex_sph_force_pass_max)
+    dot_rr2_max = std::max(dot_rr2_max, m); // a maximum: order-independent
+  }
+  return dot_rr2_max;
 }
 } // namespace chipflex::sph

@@ -8,8 +8,7 @@
 namespace chipflex::sph
 {
 LennardJonesParameters derive_lennard_jones(LennardJonesParameters p, double dp, double rho0,
-                                            double expected_pressure,
-                                            const std::string& wall_name)
+                                            double expected_pressure, const std::string& wall_name)
 {
   if (p.r0 == 0)
     p.r0 = 0.5 * dp;
@@ -18,10 +17,10 @@ LennardJonesParameters derive_lennard_jones(LennardJonesParameters p, double dp,
   if (p.k == 0)
     p.k = 10 * expected_pressure / (rho0 * dp);
   if (!(p.r0 > 0 && p.R > p.r0 && p.k > 0))
-    throw InputError("wall " + wall_name,
-                     "Lennard-Jones parameters need 0 < r0 < R and k > 0 (got r0 = " +
-                       std::to_string(p.r0) + ", R = " + std::to_string(p.R) +
-                       ", k = " + std::to_string(p.k) + ")");
+    throw InputError(
+        "wall " + wall_name,
+        "Lennard-Jones parameters need 0 < r0 < R and k > 0 (got r0 = " + std::to_string(p.r0) +
+            ", R = " + std::to_string(p.R) + ", k = " + std::to_string(p.k) + ")");
   return p;
 }
 
@@ -44,7 +43,8 @@ void LennardJonesWalls<dim>::bin(const std::vector<const WallSurface<dim>*>& wal
   if (faces_.empty())
     return;
   // Two passes (count, fill) build a compressed cell -> faces table.
-  auto for_each = [&](auto&& f) {
+  auto for_each = [&](auto&& f)
+  {
     for (std::uint32_t k = 0; k < faces_.size(); ++k)
     {
       const auto& wall = *walls_[faces_[k].wall];
@@ -56,8 +56,7 @@ void LennardJonesWalls<dim>::bin(const std::vector<const WallSurface<dim>*>& wal
         hi = hi.cwiseMax(wall.vertices[face[v]]);
       }
       const double R = forces_[faces_[k].wall].R;
-      grid.for_cells_overlapping(lo.array() - R, hi.array() + R,
-                                 [&](std::uint32_t c) { f(c, k); });
+      grid.for_cells_overlapping(lo.array() - R, hi.array() + R, [&](std::uint32_t c) { f(c, k); });
     }
   };
   for_each([&](std::uint32_t c, std::uint32_t) { ++start_[c + 1]; });

@@ -33,7 +33,7 @@ namespace chipflex::sph
 struct LennardJonesForce
 {
   explicit LennardJonesForce(const LennardJonesParameters& p)
-    : k(p.k), R(p.R), r0(p.r0), scale(p.k / (p.R * p.R * p.r0 * (2 * p.R - p.r0)))
+      : k(p.k), R(p.R), r0(p.r0), scale(p.k / (p.R * p.R * p.r0 * (2 * p.R - p.r0)))
   {
   }
   double operator()(double d) const
@@ -47,9 +47,8 @@ struct LennardJonesForce
 };
 
 /// Fills zero entries of `given` with the defaults above; checks 0 < r0 < R.
-LennardJonesParameters derive_lennard_jones(LennardJonesParameters given, double dp,
-                                            double rho0, double expected_pressure,
-                                            const std::string& wall_name);
+LennardJonesParameters derive_lennard_jones(LennardJonesParameters given, double dp, double rho0,
+                                            double expected_pressure, const std::string& wall_name);
 
 template <int dim>
 class LennardJonesWalls

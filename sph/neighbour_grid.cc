@@ -8,8 +8,7 @@
 namespace chipflex::sph
 {
 template <int dim>
-void NeighbourGrid<dim>::setup(const Vector& domain_min, const Vector& domain_max,
-                               double cell_size)
+void NeighbourGrid<dim>::setup(const Vector& domain_min, const Vector& domain_max, double cell_size)
 {
   min_ = domain_min;
   cell_size_ = cell_size;
@@ -25,7 +24,7 @@ void NeighbourGrid<dim>::setup(const Vector& domain_min, const Vector& domain_ma
   }
   if (n_cells_ > (std::size_t(1) << 31))
     throw InputError("domain", "too many neighbour cells (" + std::to_string(n_cells_) +
-                                 "): shrink the domain or enlarge the particle spacing");
+                                   "): shrink the domain or enlarge the particle spacing");
   if constexpr (dim == 2)
   {
     for (int r = 0; r < 3; ++r)

@@ -7,7 +7,6 @@
 // every side so that no range needs a bounds check.
 
 #include <Eigen/Core>
-
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -56,8 +55,8 @@ public:
 private:
   Vector min_;
   double cell_size_ = 0, inverse_cell_size_ = 0;
-  std::array<std::uint32_t, dim> n_{};        // cells per direction including ghosts
-  std::array<double, dim> interior_{};        // interior cells per direction
+  std::array<std::uint32_t, dim> n_{}; // cells per direction including ghosts
+  std::array<double, dim> interior_{}; // interior cells per direction
   std::array<std::int64_t, n_rows> row_offsets_{};
   std::size_t n_cells_ = 0;
 };
@@ -69,8 +68,10 @@ void NeighbourGrid<dim>::for_cells_overlapping(const Vector& lo, const Vector& h
   std::array<std::int64_t, dim> a, b;
   for (int d = 0; d < dim; ++d)
   {
-    a[d] = std::max<std::int64_t>(0, std::int64_t(std::floor((lo[d] - min_[d]) * inverse_cell_size_)) + 1);
-    b[d] = std::min<std::int64_t>(n_[d] - 1, std::int64_t(std::floor((hi[d] - min_[d]) * inverse_cell_size_)) + 1);
+    a[d] = std::max<std::int64_t>(
+        0, std::int64_t(std::floor((lo[d] - min_[d]) * inverse_cell_size_)) + 1);
+    b[d] = std::min<std::int64_t>(
+        n_[d] - 1, std::int64_t(std::floor((hi[d] - min_[d]) * inverse_cell_size_)) + 1);
     if (a[d] > b[d])
       return;
   }

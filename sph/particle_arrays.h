@@ -17,10 +17,12 @@
 namespace chipflex::sph
 {
 /// Below these particle counts a loop runs on one thread: the OpenMP fork and barrier
-/// cost more than the work, and on a loaded machine a barrier can stall for a whole
-/// scheduler slice. The force loop is heavy (~1 us per particle), the others light.
+/// cost more than the work, and on a loaded machine every barrier can stall for a
+/// scheduler slice. The force loop is heavy (~0.3 us per particle per thread); the
+/// light O(n) loops (update, cells, permutation: a few ns per particle) stay serial
+/// up to 200k particles, so a step has one parallel region below that.
 inline constexpr std::size_t parallel_threshold = 2000;
-inline constexpr std::size_t light_parallel_threshold = 16000;
+inline constexpr std::size_t light_parallel_threshold = 200000;
 
 template <int dim>
 struct ParticleArrays

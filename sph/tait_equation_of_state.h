@@ -10,8 +10,8 @@ namespace chipflex::sph
 struct TaitEquationOfState
 {
   TaitEquationOfState(double rho0, double c0, double gamma)
-    : rho0(rho0), c0(c0), gamma(gamma), B(rho0 * c0 * c0 / gamma), inverse_rho0(1.0 / rho0),
-      integer_gamma_7(gamma == 7)
+      : rho0(rho0), c0(c0), gamma(gamma), B(rho0 * c0 * c0 / gamma), inverse_rho0(1.0 / rho0),
+        integer_gamma_7(gamma == 7)
   {
   }
 

@@ -8,7 +8,6 @@
 #include "sph/wall_surface.h"
 
 #include <Eigen/Geometry>
-
 #include <array>
 #include <cmath>
 
@@ -78,8 +77,8 @@ Eigen::Matrix<double, dim, 1> point_on_face(const WallSurface<dim>& wall, int fa
   }
   else
     n = (wall.vertices[f[1]] - wall.vertices[f[0]])
-          .cross(wall.vertices[f[2]] - wall.vertices[f[0]])
-          .normalized();
+            .cross(wall.vertices[f[2]] - wall.vertices[f[0]])
+            .normalized();
   return x + offset * n;
 }
 } // namespace chipflex::sph

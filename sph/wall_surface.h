@@ -7,7 +7,6 @@
 // fluid loses is exactly the momentum the wall gains.
 
 #include <Eigen/Core>
-
 #include <array>
 #include <string>
 #include <vector>

@@ -14,8 +14,8 @@ template <int dim>
 struct WendlandKernel
 {
   explicit WendlandKernel(double h)
-    : h(h), alpha(dim == 2 ? 7.0 / (4.0 * M_PI * h * h) : 21.0 / (16.0 * M_PI * h * h * h)),
-      gradient_factor(-5.0 * alpha / (h * h))
+      : h(h), alpha(dim == 2 ? 7.0 / (4.0 * M_PI * h * h) : 21.0 / (16.0 * M_PI * h * h * h)),
+        gradient_factor(-5.0 * alpha / (h * h))
   {
   }
 

@@ -129,11 +129,13 @@ TEST_CASE("moving wall reactions balance the fluid's momentum change", "[sph][co
       }
       f.add_fluid_particles(x, rho);
       const double speed = 0.5;
-      f.add_hook(HookPoint::before_forces, [&](FluidSolver<2>& s) {
-        const double shift = -speed * s.time();
-        s.move_wall(id, {Vector(0.305 + shift, 0.3), Vector(0.305 + shift, -0.02)},
-                    {Vector(-speed, 0), Vector(-speed, 0)});
-      });
+      f.add_hook(HookPoint::before_forces,
+                 [&](FluidSolver<2>& s)
+                 {
+                   const double shift = -speed * s.time();
+                   s.move_wall(id, {Vector(0.305 + shift, 0.3), Vector(0.305 + shift, -0.02)},
+                               {Vector(-speed, 0), Vector(-speed, 0)});
+                 });
       double worst = 0, scale = 0;
       for (int s = 0; s < 400; ++s)
       {
@@ -145,8 +147,7 @@ TEST_CASE("moving wall reactions balance the fluid's momentum change", "[sph][co
         worst = std::max(worst, (change - gravity - walls).norm());
         scale = std::max(scale, walls.norm());
       }
-      const Vector piston_force =
-        f.wall_vertex_forces(id)[0] + f.wall_vertex_forces(id)[1];
+      const Vector piston_force = f.wall_vertex_forces(id)[0] + f.wall_vertex_forces(id)[1];
       INFO("worst mismatch " << worst << " N s, largest wall impulse per step " << scale
                              << ", piston force " << piston_force.transpose());
       REQUIRE(scale > 0);

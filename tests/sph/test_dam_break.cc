@@ -63,12 +63,14 @@ TEST_CASE("dam break surge front follows Martin and Moyce 1952", "[sph][validati
     }
   }
   // Time lead of the model: T_experiment(Z_model) - T_model, averaged.
-  auto experiment_T = [](double Z) {
+  auto experiment_T = [](double Z)
+  {
     const int n = sizeof experiment / sizeof experiment[0];
     for (int k = 0; k + 1 < n; ++k)
       if (Z <= experiment[k + 1][1])
-        return experiment[k][0] + (Z - experiment[k][1]) / (experiment[k + 1][1] - experiment[k][1]) *
-                                    (experiment[k + 1][0] - experiment[k][0]);
+        return experiment[k][0] + (Z - experiment[k][1]) /
+                                      (experiment[k + 1][1] - experiment[k][1]) *
+                                      (experiment[k + 1][0] - experiment[k][0]);
     return experiment[n - 1][0];
   };
   double lead = 0;
@@ -80,11 +82,10 @@ TEST_CASE("dam break surge front follows Martin and Moyce 1952", "[sph][validati
       CHECK(std::abs(Z / experiment_Z(T) - 1) < 0.15);
   }
   lead /= double(front.size());
-  const double speed = (front.back().second - front.front().second) /
-                       (front.back().first - front.front().first);
-  const double measured =
-    (experiment_Z(front.back().first) - experiment_Z(front.front().first)) /
-    (front.back().first - front.front().first);
+  const double speed =
+      (front.back().second - front.front().second) / (front.back().first - front.front().first);
+  const double measured = (experiment_Z(front.back().first) - experiment_Z(front.front().first)) /
+                          (front.back().first - front.front().first);
   INFO("front speed dZ/dT = " << speed << ", experiment " << measured << "; lead " << lead);
   CHECK(std::abs(speed / measured - 1) < 0.10);
   CHECK(lead >= 0);

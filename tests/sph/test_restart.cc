@@ -7,9 +7,8 @@
 #include "sph_test_cases.h"
 
 #include <catch2/catch.hpp>
-#include <omp.h>
-
 #include <cstdio>
+#include <omp.h>
 
 using namespace chipflex::sph;
 
@@ -27,8 +26,7 @@ void require_identical(const FluidSolver<2>& a, const FluidSolver<2>& b)
   {
     bool same = p.id[i] == q.id[i] && p.density[i] == q.density[i];
     for (int d = 0; d < 2; ++d)
-      same = same && p.position[d][i] == q.position[d][i] &&
-             p.velocity[d][i] == q.velocity[d][i];
+      same = same && p.position[d][i] == q.position[d][i] && p.velocity[d][i] == q.velocity[d][i];
     differences += !same;
   }
   CHECK(differences == 0);
@@ -80,7 +78,8 @@ TEST_CASE("restart from a checkpoint repeats the uninterrupted run bitwise", "[s
 TEST_CASE("results do not depend on the thread count", "[sph][threads]")
 {
   const int threads = omp_get_max_threads();
-  auto run = [](int n) {
+  auto run = [](int n)
+  {
     omp_set_num_threads(n);
     // Enough particles for the parallel loops (sph::parallel_threshold), and a
     // Lennard-Jones floor strip so that the wall path runs threaded too.

@@ -18,9 +18,9 @@ TEST_CASE("modified Lennard-Jones force law", "[sph][walls]")
   CHECK(std::abs(f(0.005)) < 1e-9);
   CHECK(f(0.01) == 0);
   CHECK(f(0.02) == 0);
-  CHECK(f(0.0075) < 0);               // slightly attractive beyond r0
-  CHECK(f(0.0025) > 0);               // repulsive inside r0
-  CHECK(f(-0.001) == Approx(1000));   // crossed: pushed back with k
+  CHECK(f(0.0075) < 0);                         // slightly attractive beyond r0
+  CHECK(f(0.0025) > 0);                         // repulsive inside r0
+  CHECK(f(-0.001) == Approx(1000));             // crossed: pushed back with k
   const double R = 0.01, r0 = 0.005, d = 0.003; // the formula written out
   const double expected = 1000 * (std::pow(R - d, 4) - std::pow(R - r0, 2) * std::pow(R - d, 2)) /
                           (R * R * r0 * (2 * R - r0));
