@@ -4,7 +4,6 @@
 #include "common/input_error.h"
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <filesystem>
 #include <sstream>
 
@@ -80,8 +79,7 @@ void declare_body(ParameterHandler& prm)
                     "SPH solid: unit vector from the clamped to the free end.");
 }
 
-Eigen::Vector2d read_vector(ParameterHandler& prm, const std::string& key,
-                            const std::string& where)
+Eigen::Vector2d read_vector(ParameterHandler& prm, const std::string& key, const std::string& where)
 {
   std::stringstream s(prm.get(key));
   std::vector<double> v;
@@ -98,14 +96,13 @@ Eigen::Vector2d read_vector(ParameterHandler& prm, const std::string& key,
     }
   }
   if (v.size() != 2)
-    throw InputError(where + ", " + key,
-                     "'" + prm.get(key) + "': expected 2 numbers (a 2D vector), got " +
-                       std::to_string(v.size()));
+    throw InputError(where + ", " + key, "'" + prm.get(key) +
+                                             "': expected 2 numbers (a 2D vector), got " +
+                                             std::to_string(v.size()));
   return {v[0], v[1]};
 }
 
-std::string locate(const std::string& file, const std::string& case_path,
-                   const std::string& where)
+std::string locate(const std::string& file, const std::string& case_path, const std::string& where)
 {
   namespace fs = std::filesystem;
   if (file.empty() || fs::path(file).is_absolute())
@@ -116,7 +113,7 @@ std::string locate(const std::string& file, const std::string& case_path,
   if (fs::exists(file))
     return file;
   throw InputError(where, "file '" + file + "' found neither beside " + case_path +
-                            " nor in the working directory");
+                              " nor in the working directory");
 }
 } // namespace
 
@@ -151,13 +148,13 @@ BodyCase read_body_case(ParameterHandler& prm, const std::string& case_path)
     prm.enter_subsection("body " + std::to_string(b));
     const std::string where = case_path + ": bodies, body " + std::to_string(b);
     if (prm.get("kind") == "none")
-      throw InputError(where + ", kind", "count = " + std::to_string(count) +
-                                           " but body " + std::to_string(b) + " has kind none");
+      throw InputError(where + ", kind", "count = " + std::to_string(count) + " but body " +
+                                             std::to_string(b) + " has kind none");
     coupling::BodyDescription d;
     d.kind = coupling::parse_body_kind(prm.get("kind"), where + ", kind");
     d.name = prm.get("name").empty() ? "body" + std::to_string(b) : prm.get("name");
     d.wall_model = prm.get("wall model") == "lennard jones" ? sph::WallModel::lennard_jones
-                                                              : sph::WallModel::dummy_particles;
+                                                            : sph::WallModel::dummy_particles;
     d.lennard_jones.k = prm.get_double("lennard jones k");
     d.lennard_jones.R = prm.get_double("lennard jones R");
     d.lennard_jones.r0 = prm.get_double("lennard jones r0");

@@ -20,8 +20,8 @@ constexpr double sample_interval = 1e-4; // s
 
 CoupledSimulation::CoupledSimulation(const sph::CaseDescription<2>& fluid_case,
                                      const BodyCase& bodies, const std::string& output_directory)
-  : fluid_(fluid_case), case_(bodies), skins_(output_directory),
-    started_(std::chrono::steady_clock::now())
+    : fluid_(fluid_case), case_(bodies), skins_(output_directory),
+      started_(std::chrono::steady_clock::now())
 {
   // Coupled momentum exchange is exact only with the symplectic fluid scheme (the
   // Verlet step's velocity update spans two steps): refuse the other rather than
@@ -32,8 +32,7 @@ CoupledSimulation::CoupledSimulation(const sph::CaseDescription<2>& fluid_case,
   for (const auto& d : case_.bodies)
   {
     bodies_.push_back(coupling::make_coupled_body(d, fluid_.description().fluid.gravity));
-    cosim_->add_body(*bodies_.back(), d.name, d.wall_model, d.lennard_jones,
-                     d.expected_pressure);
+    cosim_->add_body(*bodies_.back(), d.name, d.wall_model, d.lennard_jones, d.expected_pressure);
     probe_start_.push_back(bodies_.back()->probe_position());
     histories_.emplace_back();
   }
@@ -108,8 +107,9 @@ void CoupledSimulation::save(Hdf5File& file) const
       rows.insert(rows.end(), {h.time()[i], h.dx()[i], h.dy()[i]});
     file.write("/probes/" + case_.bodies[b].name, rows, {h.size(), 3});
   }
-  const double wall = restored_wall_seconds_ +
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  const double wall =
+      restored_wall_seconds_ +
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
   file.write_attribute("/probes", "wall_seconds", wall);
 }
 
@@ -146,8 +146,9 @@ std::string CoupledSimulation::summary() const
 
 std::string CoupledSimulation::finish(const std::string& output_directory) const
 {
-  const double wall = restored_wall_seconds_ +
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  const double wall =
+      restored_wall_seconds_ +
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
   std::ostringstream line;
   line << std::fixed << std::setprecision(2);
   for (std::size_t b = 0; b < bodies_.size(); ++b)
@@ -160,8 +161,8 @@ std::string CoupledSimulation::finish(const std::string& output_directory) const
       const auto reference = coupling::DisplacementHistory::read_csv(case_.reference_file);
       if (time() + 1e-9 >= case_.error_window_end)
       {
-        const auto e = histories_[b].rms_error(reference, case_.error_window_begin,
-                                               case_.error_window_end);
+        const auto e =
+            histories_[b].rms_error(reference, case_.error_window_begin, case_.error_window_end);
         line << " rms_dx_mm=" << e.rms_dx * 1e3 << " rms_dy_mm=" << e.rms_dy * 1e3
              << " frames=" << e.frames;
       }

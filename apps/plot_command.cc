@@ -12,11 +12,11 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <unistd.h>
 
 namespace chipflex::apps
 {
@@ -124,11 +124,10 @@ int plot_command(const Arguments& args)
       labels.push_back(l);
     if (labels.size() != runs.size())
       throw InputError("--labels", std::to_string(labels.size()) + " labels for " +
-                                     std::to_string(runs.size()) + " runs");
+                                       std::to_string(runs.size()) + " runs");
   }
   const std::string data = find_data_folder(cl.has("--data") ? cl.get("--data") : "");
-  const fs::path work = fs::temp_directory_path() /
-                        ("chipflex_plot_" + std::to_string(::getpid()));
+  const fs::path work = fs::temp_directory_path() / ("chipflex_plot_" + std::to_string(::getpid()));
   fs::create_directories(work);
 
   std::vector<Curve> curves;
@@ -136,8 +135,7 @@ int plot_command(const Arguments& args)
   for (std::size_t r = 0; r < runs.size(); ++r)
   {
     const auto h = DisplacementHistory::read_csv(displacement_file(runs[r]));
-    const std::string label =
-      labels.empty() ? fs::path(runs[r]).filename().string() : labels[r];
+    const std::string label = labels.empty() ? fs::path(runs[r]).filename().string() : labels[r];
     curves.push_back({label.empty() ? runs[r] : label,
                       write_table(h, (work / ("run" + std::to_string(r) + ".dat")).string()),
                       std::string("lines lw 2.5 lc rgb '") + run_colours[r % 6] + "'", -1});
@@ -147,18 +145,20 @@ int plot_command(const Arguments& args)
                     write_table(experiment, (work / "experiment.dat").string()),
                     "points pt 7 ps 1.3 lc rgb 'black'", -1});
   const std::pair<const char*, const char*> published[] = {
-    {"antoci2007_sph", "SPH, Antoci 2007"},
-    {"khayyer2018_isph_sph", "ISPH-SPH, Khayyer 2018"},
-    {"yang2012_sph_fem", "SPH-FEM, Yang 2012"}};
+      {"antoci2007_sph", "SPH, Antoci 2007"},
+      {"khayyer2018_isph_sph", "ISPH-SPH, Khayyer 2018"},
+      {"yang2012_sph_fem", "SPH-FEM, Yang 2012"}};
   int dash = 2;
   for (const auto& [stem, label] : published)
   {
     for (int c = 0; c < 2; ++c)
     {
-      const auto h = DisplacementHistory::read_csv(
-        data + "/" + stem + (c == 0 ? "_dx.csv" : "_dy.csv"), c);
-      curves.push_back({label, write_table(h, (work / (std::string(stem) + std::to_string(c) + ".dat")).string()),
-                        "lines dt " + std::to_string(dash) + " lw 1.5 lc rgb 'gray40'", c});
+      const auto h =
+          DisplacementHistory::read_csv(data + "/" + stem + (c == 0 ? "_dx.csv" : "_dy.csv"), c);
+      curves.push_back(
+          {label,
+           write_table(h, (work / (std::string(stem) + std::to_string(c) + ".dat")).string()),
+           "lines dt " + std::to_string(dash) + " lw 1.5 lc rgb 'gray40'", c});
     }
     ++dash;
   }
@@ -171,7 +171,7 @@ int plot_command(const Arguments& args)
     gp << "set terminal pngcairo size 1400,600 font 'Sans,11' noenhanced\n"
        << "set output '" << output.temporary_path() << "'\n"
        << "set multiplot layout 1,2 title '" << cl.get("--title") << "'\n"
-       << "set grid\nset xlabel 'time (s)'\nset xrange [0:0.4]\nset key top left\n";
+       << "set grid\nset xlabel 'time (s)'\nset xrange [0:0.4]\nset key bottom right font ',9'\n";
     for (int c = 0; c < 2; ++c)
     {
       gp << "set ylabel '" << (c == 0 ? "horizontal" : "vertical")
@@ -199,7 +199,8 @@ int plot_command(const Arguments& args)
   {
     fs::remove_all(work);
     throw InputError("gnuplot", "failed to draw (is gnuplot installed? apt-get install "
-                                "gnuplot-nox); command: " + command);
+                                "gnuplot-nox); command: " +
+                                    command);
   }
   output.commit();
   fs::remove_all(work);

@@ -7,17 +7,16 @@
 #include "sph/wall_surface.h"
 
 #include <Eigen/Core>
-
 #include <string>
 
 namespace chipflex::coupling
 {
 enum class BodyKind
 {
-  rigid,     ///< a rigid rectangle (box), free or fixed
-  chain,     ///< the seed's rigid-link gate with torsion springs (Table 2)
-  flexible,  ///< a reduced floating-frame body from `chipflex reduce`
-  sph_solid  ///< an SPH-solid strip (Gray, Monaghan & Swift 2001; Table 1)
+  rigid,    ///< a rigid rectangle (box), free or fixed
+  chain,    ///< the seed's rigid-link gate with torsion springs (Table 2)
+  flexible, ///< a reduced floating-frame body from `chipflex reduce`
+  sph_solid ///< an SPH-solid strip (Gray, Monaghan & Swift 2001; Table 1)
 };
 
 struct BodyDescription
@@ -28,13 +27,13 @@ struct BodyDescription
   // ---- how the fluid sees the skin
   sph::WallModel wall_model = sph::WallModel::lennard_jones;
   sph::LennardJonesParameters lennard_jones; ///< zeros: derived from the fluid
-  double expected_pressure = 0; ///< Pa, for the derived k (0: rho0 (c0/10)^2)
+  double expected_pressure = 0;              ///< Pa, for the derived k (0: rho0 (c0/10)^2)
 
   // ---- placement (world, m / rad)
   /// rigid: centre of the box; chain: clamp point (top hinge); flexible: where the body
   /// file's origin goes; sph solid: centre of the clamped end.
   Eigen::Vector2d position = Eigen::Vector2d::Zero();
-  double angle = 0; ///< rigid and flexible: frame rotation, rad
+  double angle = 0;    ///< rigid and flexible: frame rotation, rad
   bool clamped = true; ///< rigid: fixed in space; flexible: frame clamped to ground
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero(); ///< initial, free rigid/flexible bodies
 
@@ -50,15 +49,15 @@ struct BodyDescription
   // ---- chain (Table 2 when spring_rate = 0)
   int links = 1;
   double length = 0.079, thickness = 0.005; ///< m (also the sph solid strip)
-  double spring_rate = 0;    ///< Nm/rad per metre; 0: the seed's Table 2 value
-  double spring_damping = 0; ///< Nms/rad per metre
+  double spring_rate = 0;                   ///< Nm/rad per metre; 0: the seed's Table 2 value
+  double spring_damping = 0;                ///< Nms/rad per metre
 
   // ---- flexible
   std::string body_file;
-  int modes = -1;                ///< first n modes of the file (-1: all)
-  double modal_damping = 0;      ///< zeta of every mode
+  int modes = -1;                                   ///< first n modes of the file (-1: all)
+  double modal_damping = 0;                         ///< zeta of every mode
   double rayleigh_mass = 0, rayleigh_stiffness = 0; ///< alpha (1/s), beta (s)
-  std::string probe_set = "tip"; ///< node set whose mean is the probe
+  std::string probe_set = "tip";                    ///< node set whose mean is the probe
   /// Clamped beam-like body: rebuild the skin with large-rotation kinematics from the
   /// linear rotation field (large_rotation_beam_skin.h); needs `clamp_set`, probe_set.
   bool large_rotation = false;
@@ -69,7 +68,7 @@ struct BodyDescription
   double solid_spacing = 1e-3; ///< m, along the strip
   int solid_layers = 6;
   int clamp_rows = 4, clamp_columns = 8;
-  double smoothing_factor = 1.3; ///< h / spacing
+  double smoothing_factor = 1.3;                      ///< h / spacing
   Eigen::Vector2d direction = Eigen::Vector2d(0, -1); ///< clamped end -> free end
 };
 

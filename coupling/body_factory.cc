@@ -27,7 +27,7 @@ BodyKind parse_body_kind(const std::string& word, const std::string& where)
   if (word == "sph solid" || word == "sph-solid")
     return BodyKind::sph_solid;
   throw InputError(where, "unknown body kind '" + word +
-                            "' (expected rigid, chain, flexible or sph solid)");
+                              "' (expected rigid, chain, flexible or sph solid)");
 }
 
 std::string to_string(BodyKind kind)
@@ -94,16 +94,17 @@ std::unique_ptr<CoupledBody<2>> make_rigid(const BodyDescription& d, const Vecto
   for (int k = 0; k < int(nodes.size()); ++k)
     faces.push_back({k, (k + 1) % int(nodes.size())});
   auto system = make_system(d, gravity);
-  auto body = mbs::make_rigid_body<2>(mbs::rigid_body_data<2>(mass, Vector::Zero(), inertia, nodes, faces));
+  auto body =
+      mbs::make_rigid_body<2>(mbs::rigid_body_data<2>(mass, Vector::Zero(), inertia, nodes, faces));
   body->set_pose(d.position, d.angle);
   body->set_frame_velocity(d.velocity, Eigen::Matrix<double, 1, 1>::Zero());
   if (d.clamped)
     body->clamp_to_ground();
   auto* skin = body.get();
   system->add_body(std::move(body));
-  return std::make_unique<MultibodyCoupledBody<2>>(
-    "rigid", std::move(system), *skin, d.max_step,
-    [](const mbs::MultibodySystem<2>& s) { return Vector(s.body(0).position()); });
+  return std::make_unique<MultibodyCoupledBody<2>>("rigid", std::move(system), *skin, d.max_step,
+                                                   [](const mbs::MultibodySystem<2>& s)
+                                                   { return Vector(s.body(0).position()); });
 }
 
 std::unique_ptr<CoupledBody<2>> make_chain(const BodyDescription& d, const Vector& gravity)
@@ -128,8 +129,8 @@ std::unique_ptr<CoupledBody<2>> make_chain(const BodyDescription& d, const Vecto
     links.push_back(&system->body(l));
   auto skin = std::make_unique<mbs::CompositeSkin<2>>(links);
   return std::make_unique<MultibodyCoupledBody<2>>(
-    "chain", std::move(system), std::move(skin), d.max_step,
-    [chain](const mbs::MultibodySystem<2>& s) { return chain.tip_position(s); });
+      "chain", std::move(system), std::move(skin), d.max_step,
+      [chain](const mbs::MultibodySystem<2>& s) { return chain.tip_position(s); });
 }
 
 std::unique_ptr<CoupledBody<2>> make_flexible(const BodyDescription& d, const Vector& gravity)
@@ -139,12 +140,11 @@ std::unique_ptr<CoupledBody<2>> make_flexible(const BodyDescription& d, const Ve
                      "a flexible body needs a body file from `chipflex reduce`");
   const ReducedBodyData data = read_reduced_body(d.body_file);
   if (data.dim != 2)
-    throw InputError(d.body_file, "a " + std::to_string(data.dim) +
-                                    "D body file in a 2D case");
+    throw InputError(d.body_file, "a " + std::to_string(data.dim) + "D body file in a 2D case");
   if (d.modes == 0 || d.modes > data.n_modes())
     throw InputError("body '" + d.name + "', modes",
                      "the file has " + std::to_string(data.n_modes()) + " modes, asked for " +
-                       std::to_string(d.modes));
+                         std::to_string(d.modes));
   mbs::FloatingFrameOptions options;
   options.n_modes = d.modes;
   if (d.modal_damping > 0 && (d.rayleigh_mass > 0 || d.rayleigh_stiffness > 0))
@@ -177,17 +177,17 @@ std::unique_ptr<CoupledBody<2>> make_flexible(const BodyDescription& d, const Ve
     auto beam = std::make_unique<LargeRotationBeamSkin>(*skin, d.clamp_set, d.probe_set);
     const LargeRotationBeamSkin* probe_skin = beam.get();
     return std::make_unique<MultibodyCoupledBody<2>>(
-      "flexible", std::move(system), std::move(beam), d.max_step,
-      [probe_skin](const mbs::MultibodySystem<2>&) { return probe_skin->tip_position(); });
+        "flexible", std::move(system), std::move(beam), d.max_step,
+        [probe_skin](const mbs::MultibodySystem<2>&) { return probe_skin->tip_position(); });
   }
-  return std::make_unique<MultibodyCoupledBody<2>>(
-    "flexible", std::move(system), *skin, d.max_step,
-    [probe](const mbs::MultibodySystem<2>& s) {
-      Vector sum = Vector::Zero();
-      for (int n : probe)
-        sum += s.body(0).node_position(n);
-      return Vector(sum / double(probe.size()));
-    });
+  return std::make_unique<MultibodyCoupledBody<2>>("flexible", std::move(system), *skin, d.max_step,
+                                                   [probe](const mbs::MultibodySystem<2>& s)
+                                                   {
+                                                     Vector sum = Vector::Zero();
+                                                     for (int n : probe)
+                                                       sum += s.body(0).node_position(n);
+                                                     return Vector(sum / double(probe.size()));
+                                                   });
 }
 
 std::unique_ptr<CoupledBody<2>> make_sph_solid(const BodyDescription& d, const Vector& gravity)

@@ -30,9 +30,9 @@ int CoSimulation<dim>::add_body(CoupledBody<dim>& body, const std::string& name,
   {
     const double c0 = p.speed_of_sound;
     const double pe =
-      expected_pressure > 0 ? expected_pressure : p.reference_density * (c0 / 10) * (c0 / 10);
-    lennard_jones = sph::derive_lennard_jones(lennard_jones, p.particle_spacing,
-                                              p.reference_density, pe, name);
+        expected_pressure > 0 ? expected_pressure : p.reference_density * (c0 / 10) * (c0 / 10);
+    lennard_jones =
+        sph::derive_lennard_jones(lennard_jones, p.particle_spacing, p.reference_density, pe, name);
   }
   Coupled c;
   c.body = &body;
@@ -127,7 +127,7 @@ void CoSimulation<dim>::load_bodies(const Hdf5File& file, const std::string& gro
     const auto kind = file.read_string_attribute(path, "kind");
     if (kind != c.body->kind())
       throw InputError(file.path(), "body '" + c.name + "' is a " + c.body->kind() +
-                                      " here but a " + kind + " in the checkpoint");
+                                        " here but a " + kind + " in the checkpoint");
     c.body->restore(file.read_doubles(path));
   }
 }

@@ -135,7 +135,7 @@ DisplacementHistory DisplacementHistory::read_csv(const std::string& path, int s
     if (values.size() != columns)
       throw InputError(path + ":" + std::to_string(line_number),
                        "expected " + std::to_string(columns) + " columns, found " +
-                         std::to_string(values.size()));
+                           std::to_string(values.size()));
     if (!h.time_.empty() && values[0] < h.time_.back())
       throw InputError(path + ":" + std::to_string(line_number), "time goes backwards");
     if (columns == 3)

@@ -21,7 +21,7 @@ Eigen::Vector2d mean_of(const mbs::FloatingFrameBody<2>& body, const std::vector
 LargeRotationBeamSkin::LargeRotationBeamSkin(mbs::FloatingFrameBody<2>& body,
                                              const std::string& clamp_set,
                                              const std::string& tip_set)
-  : body_(body)
+    : body_(body)
 {
   if (!body.clamped_to_ground())
     throw InputError("large-rotation skin", "the body must be clamped to ground");
@@ -57,20 +57,21 @@ LargeRotationBeamSkin::LargeRotationBeamSkin(mbs::FloatingFrameBody<2>& body,
       ++e;
     }
     if (minus < 0 || plus < 0)
-      throw InputError("large-rotation skin",
-                       "the two long faces have no matching node at s = " +
-                         std::to_string(face_nodes[j].first) + " m (needs a structured mesh)");
+      throw InputError("large-rotation skin", "the two long faces have no matching node at s = " +
+                                                  std::to_string(face_nodes[j].first) +
+                                                  " m (needs a structured mesh)");
     s_.push_back(face_nodes[j].first);
     minus_.push_back(minus);
     plus_.push_back(plus);
     j = e;
   }
-  auto station_of = [&](const Vector& x) {
+  auto station_of = [&](const Vector& x)
+  {
     const double s = (x - origin_).dot(a_);
     const auto k = std::lower_bound(s_.begin(), s_.end(), s - tol) - s_.begin();
     if (k >= long(s_.size()) || std::abs(s_[k] - s) > tol)
-      throw InputError("large-rotation skin", "a skin node at s = " + std::to_string(s) +
-                                                " m lies between face stations");
+      throw InputError("large-rotation skin",
+                       "a skin node at s = " + std::to_string(s) + " m lies between face stations");
     return int(k);
   };
   for (int i : skin)
@@ -134,10 +135,9 @@ void LargeRotationBeamSkin::skin_velocities(std::vector<Vector>& v) const
   for (std::size_t k = 1; k < s_.size(); ++k)
   {
     const double h = s_[k] - s_[k - 1];
-    centre_velocity[k] = centre_velocity[k - 1] +
-                         0.5 * h *
-                           (normal(theta_[k - 1]) * theta_dot_[k - 1] +
-                            normal(theta_[k]) * theta_dot_[k]);
+    centre_velocity[k] =
+        centre_velocity[k - 1] +
+        0.5 * h * (normal(theta_[k - 1]) * theta_dot_[k - 1] + normal(theta_[k]) * theta_dot_[k]);
   }
   v.resize(station_.size());
   for (std::size_t i = 0; i < station_.size(); ++i)
@@ -171,9 +171,8 @@ void LargeRotationBeamSkin::set_skin_forces(const std::vector<Vector>& f)
   {
     double weight_ahead = l + 1 < m ? 0.5 * (s_[l + 1] - s_[l]) : 0.0;
     double weight_behind = l > 0 ? 0.5 * (s_[l] - s_[l - 1]) : 0.0;
-    const double M = normal(theta_[l]).dot(weight_ahead * suffix[l + 1] +
-                                            weight_behind * suffix[l]) +
-                     couple[l];
+    const double M =
+        normal(theta_[l]).dot(weight_ahead * suffix[l + 1] + weight_behind * suffix[l]) + couple[l];
     // theta_l = (u_a(minus) - u_a(plus)) / t: the conjugate forces are +-M/t along a.
     nodes.push_back(minus_[l]);
     forces.push_back(body_.rotation() * (a_ * (M / thickness_)));

@@ -36,10 +36,7 @@ public:
                         const std::string& tip_set);
 
   std::size_t n_skin_nodes() const override { return body_.n_skin_nodes(); }
-  const std::vector<std::array<int, 2>>& skin_faces() const override
-  {
-    return body_.skin_faces();
-  }
+  const std::vector<std::array<int, 2>>& skin_faces() const override { return body_.skin_faces(); }
   void skin_positions(std::vector<Vector>& x) const override;
   void skin_velocities(std::vector<Vector>& v) const override;
   void set_skin_forces(const std::vector<Vector>& f) override;
@@ -52,12 +49,12 @@ private:
   Vector place(int station, double c) const; ///< frame coordinates
 
   mbs::FloatingFrameBody<2>& body_;
-  Vector a_, n_, origin_;            ///< axis, normal, clamp centre (frame coordinates)
+  Vector a_, n_, origin_; ///< axis, normal, clamp centre (frame coordinates)
   double thickness_ = 0;
-  std::vector<double> s_;            ///< stations along the axis
-  std::vector<int> minus_, plus_;    ///< face nodes (c = -t/2, +t/2) per station
-  std::vector<int> station_;         ///< per skin node
-  std::vector<double> c_;            ///< per skin node
+  std::vector<double> s_;         ///< stations along the axis
+  std::vector<int> minus_, plus_; ///< face nodes (c = -t/2, +t/2) per station
+  std::vector<int> station_;      ///< per skin node
+  std::vector<double> c_;         ///< per skin node
   std::vector<int> tip_station_;
   std::vector<double> tip_c_;
   mutable std::vector<double> theta_, theta_dot_;

@@ -9,8 +9,8 @@ MultibodyCoupledBody<dim>::MultibodyCoupledBody(std::string kind,
                                                 std::unique_ptr<mbs::MultibodySystem<dim>> system,
                                                 mbs::SkinBody<dim>& skin, double max_step,
                                                 Probe probe)
-  : kind_(std::move(kind)), system_(std::move(system)), skin_(&skin), max_step_(max_step),
-    probe_(std::move(probe))
+    : kind_(std::move(kind)), system_(std::move(system)), skin_(&skin), max_step_(max_step),
+      probe_(std::move(probe))
 {
 }
 
@@ -19,8 +19,8 @@ MultibodyCoupledBody<dim>::MultibodyCoupledBody(std::string kind,
                                                 std::unique_ptr<mbs::MultibodySystem<dim>> system,
                                                 std::unique_ptr<mbs::SkinBody<dim>> owned_skin,
                                                 double max_step, Probe probe)
-  : kind_(std::move(kind)), system_(std::move(system)), owned_skin_(std::move(owned_skin)),
-    skin_(owned_skin_.get()), max_step_(max_step), probe_(std::move(probe))
+    : kind_(std::move(kind)), system_(std::move(system)), owned_skin_(std::move(owned_skin)),
+      skin_(owned_skin_.get()), max_step_(max_step), probe_(std::move(probe))
 {
 }
 

@@ -7,7 +7,6 @@
 // rule as the particle frames (apps/particle_output.h).
 
 #include <Eigen/Core>
-
 #include <array>
 #include <string>
 #include <vector>

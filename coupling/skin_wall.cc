@@ -5,10 +5,9 @@
 namespace chipflex::coupling
 {
 template <int dim>
-SkinWall<dim>::SkinWall(mbs::SkinBody<dim>& body, const std::string& name,
-                        sph::WallModel model, const sph::LennardJonesParameters& lennard_jones,
-                        bool fluid_passes)
-  : body_(body)
+SkinWall<dim>::SkinWall(mbs::SkinBody<dim>& body, const std::string& name, sph::WallModel model,
+                        const sph::LennardJonesParameters& lennard_jones, bool fluid_passes)
+    : body_(body)
 {
   surface_.name = name;
   surface_.model = model;
@@ -36,8 +35,8 @@ template <int dim>
 void SkinWall<dim>::deliver(const std::vector<Vector>& vertex_forces)
 {
   if (vertex_forces.size() != body_.n_skin_nodes())
-    throw std::logic_error("SkinWall '" + surface_.name + "': " +
-                           std::to_string(vertex_forces.size()) + " forces for " +
+    throw std::logic_error("SkinWall '" + surface_.name +
+                           "': " + std::to_string(vertex_forces.size()) + " forces for " +
                            std::to_string(body_.n_skin_nodes()) + " skin nodes");
   delivered_ = vertex_forces;
   body_.set_skin_forces(vertex_forces);

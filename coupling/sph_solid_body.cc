@@ -4,10 +4,9 @@
 
 namespace chipflex::coupling
 {
-SphSolidBody::SphSolidBody(const sph::SolidMaterial& material,
-                           const sph::SolidStripLayout& layout, double smoothing_factor,
-                           const Vector& gravity)
-  : solid_(material, layout.spacing, smoothing_factor * layout.spacing)
+SphSolidBody::SphSolidBody(const sph::SolidMaterial& material, const sph::SolidStripLayout& layout,
+                           double smoothing_factor, const Vector& gravity)
+    : solid_(material, layout.spacing, smoothing_factor * layout.spacing)
 {
   skin_map_ = sph::build_solid_strip(solid_, layout);
   solid_.set_gravity(gravity);

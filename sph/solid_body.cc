@@ -1,22 +1,27 @@
 #include "sph/solid_body.h"
 
 #include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace chipflex::sph
 {
+namespace
+{
+/// A gate of a few hundred particles sub-steps ~10^5 times: below this size the cost of
+/// starting a parallel region every sub-step exceeds the work.
+constexpr std::size_t parallel_threshold = 4000;
+} // namespace
+
 double SolidMaterial::wave_speed() const
 {
   return std::sqrt((bulk_modulus() + 4.0 / 3.0 * shear_modulus()) / density);
 }
 
 template <int dim>
-SolidBody<dim>::SolidBody(const SolidMaterial& material, double spacing,
-                          double smoothing_length)
-  : material_(material), spacing_(spacing), h_(smoothing_length)
+SolidBody<dim>::SolidBody(const SolidMaterial& material, double spacing, double smoothing_length)
+    : material_(material), spacing_(spacing), h_(smoothing_length)
 {
   if (!(material.density > 0) || !(material.youngs_modulus > 0) ||
       !(material.poisson_ratio > -1 && material.poisson_ratio < 0.5))
@@ -127,7 +132,7 @@ void SolidBody<dim>::compute_accelerations()
   const double support = 2 * h_;
   const Tensor identity = Tensor::Identity();
 
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
     const Tensor sigma = -pressure(static_cast<int>(i)) * identity + s_[i];
@@ -140,14 +145,14 @@ void SolidBody<dim>::compute_accelerations()
       const double lambda = principal.eigenvalues()(a);
       r_principal(a) = lambda > 0 ? -eps * lambda / (rho_[i] * rho_[i]) : 0.0;
     }
-    artificial_[i] = principal.eigenvectors() * r_principal.asDiagonal() *
-                     principal.eigenvectors().transpose();
+    artificial_[i] =
+        principal.eigenvectors() * r_principal.asDiagonal() * principal.eigenvectors().transpose();
   }
 
   // Momentum. Pairwise terms are symmetric in (i, j) and multiply the antisymmetric
   // kernel gradient, so the internal forces cancel in pairs.
   const double c = material_.wave_speed();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
     Vector a = gravity_ + f_ext_[i] / mass_[i];
@@ -167,9 +172,9 @@ void SolidBody<dim>::compute_accelerations()
       if (vr < 0)
       {
         const double mu = h_ * vr / (d * d + 0.01 * h_ * h_);
-        const double pi = (-material_.viscosity_alpha * c * mu +
-                           material_.viscosity_beta * mu * mu) /
-                          (0.5 * (rho_[i] + rho_[j]));
+        const double pi =
+            (-material_.viscosity_alpha * c * mu + material_.viscosity_beta * mu * mu) /
+            (0.5 * (rho_[i] + rho_[j]));
         T.diagonal().array() -= pi;
       }
       a += mass_[j] * (T * grad);
@@ -188,7 +193,7 @@ void SolidBody<dim>::compute_stress_rates()
   const double support = 2 * h_;
   const Tensor identity = Tensor::Identity();
 
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
     Tensor L = Tensor::Zero(); // L(a, b) = dv_a / dx_b
@@ -291,8 +296,7 @@ void SolidBody<dim>::restore(const std::vector<double>& state)
   const std::size_t per = 2 * dim + 1 + dim * dim;
   if (state.size() != x_.size() * per + dim)
     throw std::invalid_argument("SolidBody::restore: state of " + std::to_string(state.size()) +
-                                " values does not fit " + std::to_string(x_.size()) +
-                                " particles");
+                                " values does not fit " + std::to_string(x_.size()) + " particles");
   const double* p = state.data();
   for (std::size_t i = 0; i < x_.size(); ++i)
   {

@@ -12,20 +12,19 @@
 // same surface-node path as every other body kind.
 
 #include <Eigen/Dense>
-
 #include <vector>
 
 namespace chipflex::sph
 {
 struct SolidMaterial
 {
-  double density = 1100;           ///< kg/m^3 (Table 1)
-  double youngs_modulus = 1.2e7;   ///< Pa (Table 1)
-  double poisson_ratio = 0.4;      ///< - (Table 1)
-  double artificial_stress = 0.2;  ///< eps of Gray et al. (Table 1)
-  double viscosity_alpha = 1.0;    ///< Monaghan artificial viscosity (Gray et al. use 1)
-  double viscosity_beta = 0.0;     ///< quadratic term (velocities here are far below c)
-  double cfl = 0.3;                ///< dt = cfl h / (c + |v|max)
+  double density = 1100;          ///< kg/m^3 (Table 1)
+  double youngs_modulus = 1.2e7;  ///< Pa (Table 1)
+  double poisson_ratio = 0.4;     ///< - (Table 1)
+  double artificial_stress = 0.2; ///< eps of Gray et al. (Table 1)
+  double viscosity_alpha = 1.0;   ///< Monaghan artificial viscosity (Gray et al. use 1)
+  double viscosity_beta = 0.0;    ///< quadratic term (velocities here are far below c)
+  double cfl = 0.3;               ///< dt = cfl h / (c + |v|max)
 
   double bulk_modulus() const { return youngs_modulus / (3 * (1 - 2 * poisson_ratio)); }
   double shear_modulus() const { return youngs_modulus / (2 * (1 + poisson_ratio)); }

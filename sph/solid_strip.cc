@@ -18,7 +18,8 @@ SolidSkin build_solid_strip(SolidBody<2>& solid, const SolidStripLayout& layout)
   const double ds = layout.length / rows;
   const double dc = layout.thickness / layers;
   const double volume = ds * dc;
-  auto place = [&](double s, double c) { return Eigen::Vector2d(layout.clamped_end_centre + s * d + c * n); };
+  auto place = [&](double s, double c)
+  { return Eigen::Vector2d(layout.clamped_end_centre + s * d + c * n); };
 
   // Deformable particles: index = row * layers + layer; row 0 next to the clamp.
   const int first = static_cast<int>(solid.n_particles());
@@ -35,7 +36,8 @@ SolidSkin build_solid_strip(SolidBody<2>& solid, const SolidStripLayout& layout)
   SolidSkin skin;
   // A skin node on particle p, pushed half a spacing outward along each listed inward
   // neighbour q: x = x_p + 1/2 sum (x_p - x_q).
-  auto node = [&](int p, std::initializer_list<int> inward) {
+  auto node = [&](int p, std::initializer_list<int> inward)
+  {
     std::vector<std::pair<int, double>> w{{p, 1.0}};
     for (int q : inward)
     {

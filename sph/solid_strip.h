@@ -21,13 +21,13 @@ namespace chipflex::sph
 struct SolidStripLayout
 {
   Eigen::Vector2d clamped_end_centre = Eigen::Vector2d::Zero(); ///< m
-  Eigen::Vector2d direction = Eigen::Vector2d(0, -1); ///< unit, clamped end -> free end
-  double length = 0.079;     ///< m
-  double thickness = 0.005;  ///< m
-  double spacing = 1e-3;     ///< m, along the length
-  int layers = 6;            ///< particles across the thickness
-  int clamp_rows = 4;        ///< fixed rows beyond the clamped end
-  int clamp_columns = 8;     ///< fixed particles per clamp row (>= layers, centred)
+  Eigen::Vector2d direction = Eigen::Vector2d(0, -1);           ///< unit, clamped end -> free end
+  double length = 0.079;                                        ///< m
+  double thickness = 0.005;                                     ///< m
+  double spacing = 1e-3;                                        ///< m, along the length
+  int layers = 6;                                               ///< particles across the thickness
+  int clamp_rows = 4;    ///< fixed rows beyond the clamped end
+  int clamp_columns = 8; ///< fixed particles per clamp row (>= layers, centred)
 };
 
 struct SolidSkin

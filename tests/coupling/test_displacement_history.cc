@@ -36,8 +36,7 @@ TEST_CASE("published gate curves give the published RMS errors", "[coupling]")
   check_published("yang2012_sph_fem", 10.6, 5.8);
 }
 
-TEST_CASE("displacement history interpolates, round-trips and refuses extrapolation",
-          "[coupling]")
+TEST_CASE("displacement history interpolates, round-trips and refuses extrapolation", "[coupling]")
 {
   DisplacementHistory h;
   h.append(0.0, 0.0, 0.0);

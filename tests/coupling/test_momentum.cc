@@ -19,8 +19,6 @@
 
 #include <catch2/catch.hpp>
 
-
-
 using namespace chipflex;
 using Vector = Eigen::Vector2d;
 
@@ -81,10 +79,12 @@ void check_momentum(sph::WallModel model, mbs::IntegratorOptions::Scheme scheme)
   coupling::CoSimulation<2> cosim(*fluid);
   cosim.add_body(body, "strip", model);
   Vector box_impulse = Vector::Zero();
-  fluid->add_hook(sph::HookPoint::after_step, [&](sph::FluidSolver<2>& f) {
-    for (const auto& force : f.wall_vertex_forces(0)) // wall 0: the tank
-      box_impulse += f.last_time_step() * force;
-  });
+  fluid->add_hook(sph::HookPoint::after_step,
+                  [&](sph::FluidSolver<2>& f)
+                  {
+                    for (const auto& force : f.wall_vertex_forces(0)) // wall 0: the tank
+                      box_impulse += f.last_time_step() * force;
+                  });
 
   const Vector p0 = cosim.total_momentum();
   const Vector body0 = body.linear_momentum();
@@ -119,13 +119,11 @@ TEST_CASE("closed box, no gravity: fluid + flexible body momentum conserved (LJ 
 
 TEST_CASE("closed box, no gravity: generalised-alpha body lags, does not drift", "[coupling]")
 {
-  check_momentum(sph::WallModel::lennard_jones,
-                 mbs::IntegratorOptions::Scheme::generalized_alpha);
+  check_momentum(sph::WallModel::lennard_jones, mbs::IntegratorOptions::Scheme::generalized_alpha);
 }
 
 TEST_CASE("closed box, no gravity: fluid + flexible body momentum conserved (dummy walls)",
           "[coupling]")
 {
-  check_momentum(sph::WallModel::dummy_particles,
-                 mbs::IntegratorOptions::Scheme::symplectic_euler);
+  check_momentum(sph::WallModel::dummy_particles, mbs::IntegratorOptions::Scheme::symplectic_euler);
 }

@@ -40,7 +40,8 @@ struct Coupled
     strip->clamp_to_ground();
     auto* skin = strip.get();
     system->add_body(std::move(strip));
-    body = std::make_unique<coupling::MultibodyCoupledBody<2>>("flexible", std::move(system), *skin);
+    body =
+        std::make_unique<coupling::MultibodyCoupledBody<2>>("flexible", std::move(system), *skin);
     cosim = std::make_unique<coupling::CoSimulation<2>>(*fluid);
     cosim->add_body(*body, "strip", sph::WallModel::lennard_jones);
   }
