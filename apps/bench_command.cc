@@ -17,11 +17,11 @@ struct Benchmark
 };
 
 const Benchmark benchmarks[] = {
-  {"reduce", "reduce a ~350k-DOF quadratic 3D strip to 20 modes", bench::reduce_benchmark},
-  {"sph-dambreak2d", "DualSPHysics CaseDambreakVal2D to t = 0.05 s",
-   bench::sph_dambreak2d_benchmark},
-  {"mbs", "wall time per implicit step of a 20-mode body and a 3-link chain",
-   bench::mbs_step_benchmark},
+    {"reduce", "reduce a ~350k-DOF quadratic 3D strip to 20 modes", bench::reduce_benchmark},
+    {"sph-dambreak2d", "DualSPHysics CaseDambreakVal2D to t = 0.05 s",
+     bench::sph_dambreak2d_benchmark},
+    {"mbs", "wall time per implicit step of a 20-mode body and a 3-link chain",
+     bench::mbs_step_benchmark},
 };
 
 void print_list(std::ostream& out)

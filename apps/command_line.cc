@@ -10,7 +10,7 @@
 namespace chipflex::apps
 {
 CommandLine::CommandLine(std::string usage, std::string summary)
-  : usage_(std::move(usage)), summary_(std::move(summary))
+    : usage_(std::move(usage)), summary_(std::move(summary))
 {
   add_flag("--help", "print this help and exit");
 }
@@ -33,8 +33,7 @@ void CommandLine::add_flag(const std::string& name, const std::string& help)
   options_.push_back({name, "", help, "", true, false, false, false});
 }
 
-void CommandLine::add_positional(const std::string& name, const std::string& help,
-                                 bool required)
+void CommandLine::add_positional(const std::string& name, const std::string& help, bool required)
 {
   options_.push_back({name, name, help, "", false, required, false, true});
 }

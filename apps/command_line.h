@@ -17,9 +17,8 @@ public:
   CommandLine(std::string usage, std::string summary);
 
   /// An option taking a value; `default_value` empty and `required` false = optional.
-  void add_option(const std::string& name, const std::string& value_name,
-                  const std::string& help, const std::string& default_value = "",
-                  bool required = false);
+  void add_option(const std::string& name, const std::string& value_name, const std::string& help,
+                  const std::string& default_value = "", bool required = false);
   /// An option that may be given several times (e.g. --static-modes).
   void add_repeated_option(const std::string& name, const std::string& value_name,
                            const std::string& help);

@@ -17,13 +17,15 @@ struct Subcommand
 };
 
 const Subcommand subcommands[] = {
-  {"mesh", "generate a gmsh mesh of a gate, plate or chip", chipflex::apps::mesh_command},
-  {"reduce", "reduce a mesh to a floating-frame body file (HDF5)", chipflex::apps::reduce_command},
-  {"info", "summarise a body file", chipflex::apps::info_command},
-  {"compare", "compare a reduced body against the full FE model", chipflex::apps::compare_command},
-  {"run", "run an SPH (and coupled body) case", chipflex::apps::run_command},
-  {"bench", "run a benchmark and print its figures", chipflex::apps::bench_command},
-  {"plot", "plot gate results against experiment (PNG)", chipflex::apps::plot_command},
+    {"mesh", "generate a gmsh mesh of a gate, plate or chip", chipflex::apps::mesh_command},
+    {"reduce", "reduce a mesh to a floating-frame body file (HDF5)",
+     chipflex::apps::reduce_command},
+    {"info", "summarise a body file", chipflex::apps::info_command},
+    {"compare", "compare a reduced body against the full FE model",
+     chipflex::apps::compare_command},
+    {"run", "run an SPH (and coupled body) case", chipflex::apps::run_command},
+    {"bench", "run a benchmark and print its figures", chipflex::apps::bench_command},
+    {"plot", "plot gate results against experiment (PNG)", chipflex::apps::plot_command},
 };
 
 void print_usage(std::ostream& out)

@@ -19,12 +19,10 @@
 #include "common/input_error.h"
 
 #include <deal.II/base/parameter_handler.h>
-
-#include <omp.h>
-
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <omp.h>
 
 namespace chipflex::apps
 {
@@ -109,7 +107,8 @@ int run_command(const Arguments& args)
       throw InputError("--threads", "must be at least 1");
     omp_set_num_threads(int(cl.get_int("--threads")));
   }
-  const double checkpoint_every = cl.has("--checkpoint-every") ? cl.get_double("--checkpoint-every") : 0;
+  const double checkpoint_every =
+      cl.has("--checkpoint-every") ? cl.get_double("--checkpoint-every") : 0;
   if (cl.has("--checkpoint-every") && !(checkpoint_every > 0))
     throw InputError("--checkpoint-every", "must be a positive time in seconds");
 
@@ -187,9 +186,8 @@ int run_command(const Arguments& args)
   probes.flush();
   if (const auto* coupled = dynamic_cast<const CoupledSimulation*>(sim.get()))
     std::cout << coupled->finish(dir) << std::endl;
-  std::cout << "finished at t = " << sim->time() << " s after " << sim->step_count()
-            << " steps; " << particles.n_frames() << " frames in " << dir << "/particles.xdmf"
-            << std::endl;
+  std::cout << "finished at t = " << sim->time() << " s after " << sim->step_count() << " steps; "
+            << particles.n_frames() << " frames in " << dir << "/particles.xdmf" << std::endl;
   return 0;
 }
 } // namespace chipflex::apps

@@ -13,6 +13,7 @@ using Arguments = std::vector<std::string>;
 int reduce_benchmark(const Arguments& args);
 /// DualSPHysics' CaseDambreakVal2D to t = 0.05 s (bench/sph_dambreak_benchmark.cc).
 int sph_dambreak2d_benchmark(const Arguments& args);
-/// Wall time per implicit step: 20-mode 3D flexible body, 3-link chain (bench/mbs_step_benchmark.cc).
+/// Wall time per implicit step: 20-mode 3D flexible body, 3-link chain
+/// (bench/mbs_step_benchmark.cc).
 int mbs_step_benchmark(const Arguments& args);
 } // namespace chipflex::bench

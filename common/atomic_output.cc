@@ -10,8 +10,8 @@
 namespace chipflex
 {
 AtomicOutput::AtomicOutput(std::string final_path)
-  : final_path_(std::move(final_path)),
-    temporary_path_(final_path_ + ".tmp" + std::to_string(::getpid()))
+    : final_path_(std::move(final_path)),
+      temporary_path_(final_path_ + ".tmp" + std::to_string(::getpid()))
 {
 }
 

@@ -11,7 +11,8 @@ namespace
 /// HDF5 prints its own error stack by default; we report errors ourselves.
 void silence_hdf5()
 {
-  static const bool silenced = [] {
+  static const bool silenced = []
+  {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     return true;
   }();
@@ -146,11 +147,11 @@ void write_dataset(hid_t file, const std::string& name, hid_t mem_type, hid_t fi
     throw std::logic_error("Hdf5File::write: shape does not match data size for " + name);
   Space space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr));
   const hid_t set =
-    H5Dcreate2(file, name.c_str(), file_type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      H5Dcreate2(file, name.c_str(), file_type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (set < 0)
     throw InputError(path + ":" + name, "cannot create dataset");
   const herr_t status =
-    n == 0 ? 0 : H5Dwrite(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
+      n == 0 ? 0 : H5Dwrite(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
   H5Dclose(set);
   if (status < 0)
     throw InputError(path + ":" + name, "cannot write dataset");
@@ -173,7 +174,7 @@ std::vector<T> read_dataset(hid_t file, const std::string& name, hid_t mem_type,
     n *= d;
   std::vector<T> data(n);
   const herr_t status =
-    n == 0 ? 0 : H5Dread(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
+      n == 0 ? 0 : H5Dread(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
   H5Dclose(set);
   if (status < 0)
     throw InputError(path + ":" + name, "cannot read dataset (wrong type or corrupted)");
@@ -205,14 +206,14 @@ void Hdf5File::write(const std::string& dataset, const std::vector<std::string>&
   hsize_t n = strings.size();
   Space space(H5Screate_simple(1, &n, nullptr));
   const hid_t set =
-    H5Dcreate2(file_, dataset.c_str(), type.id, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      H5Dcreate2(file_, dataset.c_str(), type.id, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (set < 0)
     fail(dataset, "cannot create dataset");
   std::vector<const char*> pointers;
   for (const auto& s : strings)
     pointers.push_back(s.c_str());
   const herr_t status =
-    n == 0 ? 0 : H5Dwrite(set, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data());
+      n == 0 ? 0 : H5Dwrite(set, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data());
   H5Dclose(set);
   if (status < 0)
     fail(dataset, "cannot write dataset");
@@ -253,7 +254,7 @@ std::vector<std::string> Hdf5File::read_strings(const std::string& dataset) cons
   H5Sget_simple_extent_dims(space.id, &n, nullptr);
   std::vector<char*> pointers(n, nullptr);
   const herr_t status =
-    n == 0 ? 0 : H5Dread(set, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data());
+      n == 0 ? 0 : H5Dread(set, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data());
   std::vector<std::string> result;
   if (status >= 0)
     for (char* p : pointers)
@@ -371,11 +372,10 @@ std::vector<std::string> Hdf5File::children(const std::string& group) const
   std::vector<std::string> names;
   for (hsize_t i = 0; i < info.nlinks; ++i)
   {
-    const ssize_t len = H5Lget_name_by_idx(g.id, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0,
-                                           H5P_DEFAULT);
+    const ssize_t len =
+        H5Lget_name_by_idx(g.id, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
     std::string name(static_cast<std::size_t>(len), '\0');
-    H5Lget_name_by_idx(g.id, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), len + 1,
-                       H5P_DEFAULT);
+    H5Lget_name_by_idx(g.id, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), len + 1, H5P_DEFAULT);
     names.push_back(name);
   }
   return names;

@@ -13,7 +13,7 @@ public:
   /// @param where the file (and place in it), option or case key at fault
   /// @param problem what is wrong and, where useful, what was expected
   InputError(const std::string& where, const std::string& problem)
-    : std::runtime_error(where + ": " + problem)
+      : std::runtime_error(where + ": " + problem)
   {
   }
 };

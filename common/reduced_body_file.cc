@@ -18,15 +18,14 @@ std::vector<double> row_major(const Eigen::MatrixXd& m)
 {
   std::vector<double> data(m.size());
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-    data.data(), m.rows(), m.cols()) = m;
+      data.data(), m.rows(), m.cols()) = m;
   return data;
 }
 
-Eigen::MatrixXd from_row_major(const std::vector<double>& data, std::size_t rows,
-                               std::size_t cols)
+Eigen::MatrixXd from_row_major(const std::vector<double>& data, std::size_t rows, std::size_t cols)
 {
   return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-    data.data(), rows, cols);
+      data.data(), rows, cols);
 }
 
 /// Stacks equally sized matrices into one row-major block of shape (count, r, c).
@@ -47,7 +46,7 @@ std::vector<Eigen::MatrixXd> unstack(const std::vector<double>& data, std::size_
   std::vector<Eigen::MatrixXd> blocks;
   for (std::size_t i = 0; i < count; ++i)
     blocks.push_back(from_row_major(
-      std::vector<double>(data.begin() + i * r * c, data.begin() + (i + 1) * r * c), r, c));
+        std::vector<double>(data.begin() + i * r * c, data.begin() + (i + 1) * r * c), r, c));
   return blocks;
 }
 
@@ -88,9 +87,8 @@ std::vector<int> read_ids(const Hdf5File& file, const std::string& name, int n_n
   for (auto id : raw)
   {
     if (id < 0 || id >= n_nodes)
-      throw InputError(file.path() + ":" + name,
-                       "node id " + std::to_string(id) + " outside 0.." +
-                         std::to_string(n_nodes - 1));
+      throw InputError(file.path() + ":" + name, "node id " + std::to_string(id) + " outside 0.." +
+                                                     std::to_string(n_nodes - 1));
     ids.push_back(static_cast<int>(id));
   }
   return ids;
@@ -123,7 +121,7 @@ void write_reduced_body(const std::string& path, const ReducedBodyData& b)
     f.write("/mesh/skin/node_ids", to_int64(b.skin_nodes), {b.skin_nodes.size()});
     std::vector<std::int64_t> faces(b.skin_faces.size());
     Eigen::Map<Eigen::Matrix<std::int64_t, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-      faces.data(), b.skin_faces.rows(), b.skin_faces.cols()) = b.skin_faces.cast<std::int64_t>();
+        faces.data(), b.skin_faces.rows(), b.skin_faces.cols()) = b.skin_faces.cast<std::int64_t>();
     f.write("/mesh/skin/faces", faces,
             {std::size_t(b.skin_faces.rows()), std::size_t(b.skin_faces.cols())});
     f.ensure_group("/mesh/sets");
@@ -158,7 +156,7 @@ ReducedBodyData read_reduced_body(const std::string& path)
   if (version != ReducedBodyData::format_version)
     throw InputError(path + ":/meta@format_version",
                      "version " + std::to_string(version) + " is not supported (expected " +
-                       std::to_string(ReducedBodyData::format_version) + ")");
+                         std::to_string(ReducedBodyData::format_version) + ")");
   b.dim = static_cast<int>(f.read_integer_attribute("/meta", "dim"));
   if (b.dim != 2 && b.dim != 3)
     throw InputError(path + ":/meta@dim", "must be 2 or 3, found " + std::to_string(b.dim));
@@ -198,8 +196,8 @@ ReducedBodyData read_reduced_body(const std::string& path)
     throw InputError(path + ":/modes/psi", "expected (dim * n_nodes) rows");
   const std::size_t m = psi_shape[1];
   b.psi = from_row_major(psi, dim * n, m);
-  b.frequencies_hz = Eigen::Map<const Eigen::VectorXd>(
-    read_checked(f, "/modes/frequencies_hz", {m}).data(), m);
+  b.frequencies_hz =
+      Eigen::Map<const Eigen::VectorXd>(read_checked(f, "/modes/frequencies_hz", {m}).data(), m);
   b.mode_kinds = f.read_strings("/modes/kinds");
   if (b.mode_kinds.size() != m)
     throw InputError(path + ":/modes/kinds", "expected one kind per mode");
@@ -210,13 +208,12 @@ ReducedBodyData read_reduced_body(const std::string& path)
   b.mass = read_checked(f, "/inertia/mass", {1})[0];
   if (!(b.mass > 0))
     throw InputError(path + ":/inertia/mass", "must be positive");
-  b.center_of_mass =
-    Eigen::Map<const Eigen::VectorXd>(read_checked(f, "/inertia/center_of_mass", {dim}).data(),
-                                      dim);
+  b.center_of_mass = Eigen::Map<const Eigen::VectorXd>(
+      read_checked(f, "/inertia/center_of_mass", {dim}).data(), dim);
   b.inertia_tensor = from_row_major(read_checked(f, "/inertia/inertia_tensor", {3, 3}), 3, 3);
   b.c_xx = from_row_major(read_checked(f, "/inertia/c_xx", {dim, dim}), dim, dim);
   b.translation_coupling =
-    from_row_major(read_checked(f, "/inertia/translation_coupling", {dim, m}), dim, m);
+      from_row_major(read_checked(f, "/inertia/translation_coupling", {dim, m}), dim, m);
   b.c_x_psi = unstack(read_checked(f, "/inertia/c_x_psi", {m, dim, dim}), m, dim, dim);
   b.c_psi_psi = unstack(read_checked(f, "/inertia/c_psi_psi", {m, m, dim, dim}), m * m, dim, dim);
   return b;

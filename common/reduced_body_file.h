@@ -13,7 +13,6 @@
 // 3D alike (cross products and their 2D analogues are linear in these entries).
 
 #include <Eigen/Dense>
-
 #include <map>
 #include <string>
 #include <vector>
@@ -26,26 +25,26 @@ struct ReducedBodyData
 
   // ---- /meta
   int dim = 0;
-  double youngs_modulus = 0;  ///< Pa
-  double poisson_ratio = 0;   ///< -
-  double density = 0;         ///< kg/m^3
-  std::string model;          ///< "plane_strain", "plane_stress" or "solid_3d"
-  std::string mesh_file;      ///< as given to `chipflex reduce`
-  std::string mesh_hash;      ///< FNV-1a 64-bit hash of the mesh file bytes, hex
-  int element_degree = 0;     ///< 1 or 2
-  std::string clamp_set;      ///< node set fixed to the frame; empty = free-free
-  std::string tool_version;   ///< e.g. "chipflex 0.1.0"
+  double youngs_modulus = 0; ///< Pa
+  double poisson_ratio = 0;  ///< -
+  double density = 0;        ///< kg/m^3
+  std::string model;         ///< "plane_strain", "plane_stress" or "solid_3d"
+  std::string mesh_file;     ///< as given to `chipflex reduce`
+  std::string mesh_hash;     ///< FNV-1a 64-bit hash of the mesh file bytes, hex
+  int element_degree = 0;    ///< 1 or 2
+  std::string clamp_set;     ///< node set fixed to the frame; empty = free-free
+  std::string tool_version;  ///< e.g. "chipflex 0.1.0"
 
   // ---- /mesh
-  Eigen::MatrixXd nodes;          ///< n x dim reference coordinates of all FE nodes
-  std::vector<int> skin_nodes;    ///< node ids on the boundary, ascending
-  Eigen::MatrixXi skin_faces;     ///< n_faces x dim node ids: segments (2D) / triangles (3D),
-                                  ///< linear pieces, ordered so the normal points outward
+  Eigen::MatrixXd nodes;       ///< n x dim reference coordinates of all FE nodes
+  std::vector<int> skin_nodes; ///< node ids on the boundary, ascending
+  Eigen::MatrixXi skin_faces;  ///< n_faces x dim node ids: segments (2D) / triangles (3D),
+                               ///< linear pieces, ordered so the normal points outward
   std::map<std::string, std::vector<int>> node_sets; ///< physical groups -> node ids
 
   // ---- /modes
-  Eigen::MatrixXd psi;            ///< (dim n) x m, row = node * dim + component
-  Eigen::VectorXd frequencies_hz; ///< per column: sqrt(psi^T K psi) / 2 pi
+  Eigen::MatrixXd psi;                 ///< (dim n) x m, row = node * dim + component
+  Eigen::VectorXd frequencies_hz;      ///< per column: sqrt(psi^T K psi) / 2 pi
   std::vector<std::string> mode_kinds; ///< "normal" or "static:<load case>"
 
   // ---- /reduced
@@ -53,12 +52,12 @@ struct ReducedBodyData
   Eigen::MatrixXd stiffness_matrix; ///< Psi^T K Psi
 
   // ---- /inertia (all from the consistent mass matrix)
-  double mass = 0;                  ///< kg (2D: per metre of depth)
-  Eigen::VectorXd center_of_mass;   ///< dim
-  Eigen::Matrix3d inertia_tensor;   ///< about the centre of mass; 2D: z is out of plane
-  Eigen::MatrixXd c_xx;             ///< C(x, x), dim x dim
-  Eigen::MatrixXd translation_coupling; ///< dim x m: column k = sum_ij Ms_ij psi_k,j
-                                        ///< (= Phi_t^T M Psi)
+  double mass = 0;                        ///< kg (2D: per metre of depth)
+  Eigen::VectorXd center_of_mass;         ///< dim
+  Eigen::Matrix3d inertia_tensor;         ///< about the centre of mass; 2D: z is out of plane
+  Eigen::MatrixXd c_xx;                   ///< C(x, x), dim x dim
+  Eigen::MatrixXd translation_coupling;   ///< dim x m: column k = sum_ij Ms_ij psi_k,j
+                                          ///< (= Phi_t^T M Psi)
   std::vector<Eigen::MatrixXd> c_x_psi;   ///< m entries: C(x, psi_k)
   std::vector<Eigen::MatrixXd> c_psi_psi; ///< m*m entries, index k*m+l: C(psi_k, psi_l)
 

@@ -4,7 +4,6 @@
 #include "common/atomic_output.h"
 
 #include <catch2/catch.hpp>
-
 #include <fstream>
 #include <stdexcept>
 #include <sys/stat.h>

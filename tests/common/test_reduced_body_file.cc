@@ -5,7 +5,6 @@
 #include "common/reduced_body_file.h"
 
 #include <catch2/catch.hpp>
-
 #include <cstdio>
 #include <fstream>
 
