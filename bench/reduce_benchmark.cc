@@ -68,7 +68,10 @@ int reduce_benchmark(const Arguments& args)
   const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
   const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
 
-  const std::string stem = "chipflex_bench_reduce_" + std::to_string(::getpid());
+  // Every rank reads the mesh rank 0 writes, so the name carries rank 0's process id.
+  int pid = ::getpid();
+  MPI_Bcast(&pid, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  const std::string stem = "chipflex_bench_reduce_" + std::to_string(pid);
   const std::string mesh = stem + ".msh", body_file = stem + ".h5";
   using clock = std::chrono::steady_clock;
   auto t0 = clock::now();
