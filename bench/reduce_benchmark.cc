@@ -63,6 +63,7 @@ int reduce_benchmark(const Arguments& args)
   for (auto& a : arguments)
     argv.push_back(a.data());
   int argc = argv.size();
+  argv.push_back(nullptr); // argv[argc] == nullptr, as MPI_Init expects
   char** argv_pointer = argv.data();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv_pointer, 1);
   const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);

@@ -2,6 +2,7 @@
 
 #include "common/atomic_output.h"
 #include "common/input_error.h"
+#include "fem/petsc_matrix_setup.h"
 
 #include <algorithm>
 #include <cmath>
@@ -129,8 +130,8 @@ void ElasticBody<dim>::setup_system()
   DynamicSparsityPattern dsp(relevant);
   DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false, this_process);
   SparsityTools::distribute_sparsity_pattern(dsp, locally_owned_dofs, communicator, relevant);
-  stiffness_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
-  mass_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
+  reinit_from_pattern(stiffness_matrix, dsp, locally_owned_dofs, communicator);
+  mass_matrix.reinit(stiffness_matrix); // same pattern (MatDuplicate)
 }
 
 template <int dim>
