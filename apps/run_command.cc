@@ -172,6 +172,9 @@ int run_command(const Arguments& args)
       if (t >= cadence.next_checkpoint || (checkpoint_every > 0 && t >= end_time))
       {
         cadence.next_checkpoint = next_after(t, checkpoint_every);
+        // probes.csv first: a run killed after this checkpoint resumes from rows that
+        // reach its time (ProbeOutput::resume keeps the rows up to the restart time).
+        probes.flush();
         write_checkpoint(checkpoint_path, *sim, cadence);
       }
       progress.update(t, sim->step_count());
