@@ -46,8 +46,10 @@ void declare_keys(ParameterHandler& prm)
 
   prm.enter_subsection("time");
   prm.declare_entry("end time", "1", Double(0), "Simulated time, s.");
-  prm.declare_entry("scheme", "verlet", Selection("verlet|symplectic"),
-                    "verlet (Euler every `verlet euler every` steps) or symplectic.");
+  prm.declare_entry("scheme", "verlet", Selection("verlet|symplectic|position verlet"),
+                    "verlet (Euler every `verlet euler every` steps), symplectic (two force "
+                    "passes per step) or position verlet (the same drift-kick-drift step "
+                    "with one pass; docs/sph.md).");
   prm.declare_entry("cfl", "0.2", Double(0), "Courant number on the CFL and force limits, -.");
   prm.declare_entry("verlet euler every", "40", Integer(1), "Verlet: an Euler step every N steps.");
   prm.declare_entry("minimum time step", "1e-9", Double(0),
@@ -200,8 +202,10 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c)
 
   prm.enter_subsection("time");
   c.end_time = prm.get_double("end time");
-  f.scheme =
-      prm.get("scheme") == "symplectic" ? sph::TimeScheme::symplectic : sph::TimeScheme::verlet;
+  const std::string scheme = prm.get("scheme");
+  f.scheme = scheme == "symplectic"        ? sph::TimeScheme::symplectic
+             : scheme == "position verlet" ? sph::TimeScheme::position_verlet
+                                           : sph::TimeScheme::verlet;
   f.cfl = prm.get_double("cfl");
   f.verlet_euler_every = prm.get_integer("verlet euler every");
   f.minimum_time_step = prm.get_double("minimum time step");

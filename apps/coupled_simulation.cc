@@ -23,11 +23,12 @@ CoupledSimulation::CoupledSimulation(const sph::CaseDescription<2>& fluid_case,
     : fluid_(fluid_case), case_(bodies), skins_(output_directory),
       started_(std::chrono::steady_clock::now())
 {
-  // Coupled momentum exchange is exact only with the symplectic fluid scheme (the
+  // Coupled momentum exchange is exact only with the symplectic fluid schemes (the
   // Verlet step's velocity update spans two steps): refuse the other rather than
   // silently losing momentum.
-  if (fluid_.description().fluid.scheme != sph::TimeScheme::symplectic)
-    throw InputError("time, scheme", "a case with bodies needs the symplectic scheme");
+  if (!sph::is_symplectic(fluid_.description().fluid.scheme))
+    throw InputError("time, scheme",
+                     "a case with bodies needs the symplectic or position verlet scheme");
   cosim_ = std::make_unique<coupling::CoSimulation<2>>(fluid_.fluid());
   for (const auto& d : case_.bodies)
   {

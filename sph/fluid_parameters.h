@@ -22,9 +22,22 @@ enum class DensityDiffusionModel
 
 enum class TimeScheme
 {
-  verlet,    ///< Verlet with an Euler step every `verlet_euler_every` steps (DualSPHysics)
-  symplectic ///< Monaghan's symplectic position-Verlet predictor-corrector
+  verlet,     ///< Verlet with an Euler step every `verlet_euler_every` steps (DualSPHysics)
+  symplectic, ///< Monaghan's symplectic position-Verlet predictor-corrector (DualSPHysics):
+              ///< forces at t_n for the predictor and at t_n+1/2 for the corrector
+  /// The same drift-kick-drift step with ONE force pass: the predictor's velocity and
+  /// density rates are the previous step's mid-step ones. The mid-step positions do not
+  /// depend on them (x_n + dt/2 v_n), so only the velocity-dependent terms (viscosity,
+  /// continuity) see an O(dt) older rate; the momentum update v_n+1 = v_n + dt a_n+1/2 is
+  /// unchanged, and so is the exactness of the coupling's momentum exchange.
+  position_verlet
 };
+
+/// The symplectic family keeps x_n and v_n beside the mid-step state.
+inline bool is_symplectic(TimeScheme s)
+{
+  return s == TimeScheme::symplectic || s == TimeScheme::position_verlet;
+}
 
 template <int dim>
 struct FluidParameters

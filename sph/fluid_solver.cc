@@ -110,7 +110,7 @@ void FluidSolver<dim>::finish_setup()
   auto& p = particles_;
   const std::size_t nb = staged_boundary_x_.size(), nf = staged_fluid_x_.size();
   p.n_boundary = nb;
-  p.resize(nb + nf, parameters_.scheme == TimeScheme::symplectic);
+  p.resize(nb + nf, is_symplectic(parameters_.scheme));
   for (std::size_t i = 0; i < nb + nf; ++i)
   {
     const bool fluid = i >= nb;
@@ -243,7 +243,11 @@ double FluidSolver<dim>::step()
 {
   finish_setup();
   run_hooks(HookPoint::before_forces);
-  force_pass();
+  // position_verlet reuses the previous step's mid-step pass for the predictor (and dt);
+  // only the first step (no pass yet) evaluates the forces at t_n.
+  if (parameters_.scheme != TimeScheme::position_verlet || !forces_current_)
+    force_pass();
+  forces_current_ = true;
   const double dt = compute_time_step();
   check_time_step(dt);
   dt_ = dt;

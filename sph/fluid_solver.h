@@ -160,6 +160,7 @@ private:
   double time_ = 0, dt_ = 0;
   std::int64_t step_ = 0;
   int verlet_counter_ = 0;
+  bool forces_current_ = false; ///< accelerations and rates of the last pass are valid
   bool set_up_ = false, boundary_moved_ = true, walls_moved_ = true;
   float dot_rr2_max_ = 0;
   double acceleration_max_ = 0;

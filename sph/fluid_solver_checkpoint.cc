@@ -62,6 +62,16 @@ void FluidSolver<dim>::save(Hdf5File& file, const std::string& group) const
   file.write(group + "/density", widen(p.density), {n});
   file.write(group + "/density_previous", widen(p.density_previous), {n});
   file.write(group + "/id", std::vector<std::int64_t>(p.id.begin(), p.id.end()), {n});
+  if (parameters_.scheme == TimeScheme::position_verlet && forces_current_)
+  {
+    // The next step's predictor and dt come from the last pass: a restart must not
+    // recompute them (bitwise equal to the uninterrupted run).
+    file.write(group + "/acceleration", interleave(p.acceleration, n), {n, std::size_t(dim)});
+    file.write(group + "/density_rate", widen(p.density_rate), {n});
+    file.write_attribute(group, "acceleration_max", acceleration_max_);
+    file.write_attribute(group, "dot_rr2_max", double(dot_rr2_max_));
+    file.write_attribute(group, "fastest_particle", std::int64_t(fastest_particle_));
+  }
   for (std::size_t w = 0; w < walls_.size(); ++w)
   {
     const std::string g = group + "/walls/" + std::to_string(w);
@@ -113,6 +123,20 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
     p.density[i] = float(rho[i]);
     p.density_previous[i] = float(rho_prev[i]);
     p.id[i] = std::uint32_t(id[i]);
+  }
+  forces_current_ = false;
+  if (parameters_.scheme == TimeScheme::position_verlet && file.exists(group + "/acceleration"))
+  {
+    split(file.read_doubles(group + "/acceleration"), p.acceleration, n, where);
+    const auto rate = file.read_doubles(group + "/density_rate");
+    if (rate.size() != n)
+      throw InputError(where, "wrong array size in checkpoint");
+    for (std::size_t i = 0; i < n; ++i)
+      p.density_rate[i] = float(rate[i]);
+    acceleration_max_ = file.read_double_attribute(group, "acceleration_max");
+    dot_rr2_max_ = float(file.read_double_attribute(group, "dot_rr2_max"));
+    fastest_particle_ = std::size_t(file.read_integer_attribute(group, "fastest_particle"));
+    forces_current_ = true;
   }
   for (std::size_t w = 0; w < walls_.size(); ++w)
   {

@@ -24,13 +24,13 @@ using Vector = Eigen::Vector2d;
 
 namespace
 {
-sph::CaseDescription<2> closed_box(sph::WallModel model)
+sph::CaseDescription<2> closed_box(sph::WallModel model, sph::TimeScheme fluid_scheme)
 {
   sph::CaseDescription<2> c;
   c.fluid.particle_spacing = 0.005;
   c.fluid.speed_of_sound = 20;
   c.fluid.gravity = Vector::Zero();
-  c.fluid.scheme = sph::TimeScheme::symplectic; // the scheme that reports exact reactions
+  c.fluid.scheme = fluid_scheme; // a symplectic scheme: it reports exact reactions
   c.tank.min = Vector(0, 0);
   c.tank.max = Vector(0.3, 0.2);
   c.tank.open_top = false;
@@ -58,9 +58,10 @@ ReducedBodyData centred_free_strip()
   return body;
 }
 
-void check_momentum(sph::WallModel model, mbs::IntegratorOptions::Scheme scheme)
+void check_momentum(sph::WallModel model, mbs::IntegratorOptions::Scheme scheme,
+                    sph::TimeScheme fluid_scheme = sph::TimeScheme::symplectic)
 {
-  auto description = closed_box(model);
+  auto description = closed_box(model, fluid_scheme);
   auto fluid = sph::build_fluid(description);
   // The water moves left into the box wall, the body falls onto the water.
   for (std::size_t i = fluid->n_boundary(); i < fluid->n_particles(); ++i)
@@ -126,4 +127,11 @@ TEST_CASE("closed box, no gravity: fluid + flexible body momentum conserved (dum
           "[coupling]")
 {
   check_momentum(sph::WallModel::dummy_particles, mbs::IntegratorOptions::Scheme::symplectic_euler);
+}
+
+TEST_CASE("closed box, no gravity: momentum conserved with the one-pass position Verlet fluid",
+          "[coupling]")
+{
+  check_momentum(sph::WallModel::lennard_jones, mbs::IntegratorOptions::Scheme::symplectic_euler,
+                 sph::TimeScheme::position_verlet);
 }

@@ -44,7 +44,8 @@ CaseDescription<2> sloshing_case(TimeScheme scheme)
 
 TEST_CASE("restart from a checkpoint repeats the uninterrupted run bitwise", "[sph][restart]")
 {
-  for (const auto scheme : {TimeScheme::verlet, TimeScheme::symplectic})
+  for (const auto scheme :
+       {TimeScheme::verlet, TimeScheme::symplectic, TimeScheme::position_verlet})
   {
     DYNAMIC_SECTION("scheme " << int(scheme))
     {
