@@ -14,10 +14,13 @@
 // oscillation it starts with being small and averaged out. The water level stays the
 // initial one: the basin's water volume and the box's displacement are unchanged.
 //
-// Measured: draft 24.43 mm at dp = 2 mm (+1.8 %), 24.93 mm at dp = 4 mm (+3.9 %). The
-// excess halves with dp, an O(dp) offset of the fluid's edge at the Lennard-Jones skin
-// (we attribute it to the first particle layer sitting closer than the r0 = dp/2 its
-// volume needs; not measured apart). Hence dp = 2 mm here (label `validation`: ~3 min).
+// Measured (symplectic fluid): with the dummy-particle skin the draft is 23.99 mm at
+// dp = 4 mm (-0.05 %). With the Lennard-Jones skin it is 24.73 mm at dp = 4 mm (+3.1 %)
+// and 24.43 mm at dp = 2 mm (+1.8 %): the excess halves with dp, an O(dp) offset of the
+// fluid's edge at a Lennard-Jones skin (we attribute it to the first particle layer
+// sitting closer than the r0 = dp/2 its volume needs; not measured apart). So the 2 %
+// check runs on the dummy-particle skin, and the Lennard-Jones skin is held to its
+// measured first-order offset (5 % at 4 mm), both at dp = 4 mm (~40 s each).
 
 #include "coupling/body_factory.h"
 #include "coupling/co_simulation.h"
@@ -28,10 +31,18 @@
 using namespace chipflex;
 using Vector = Eigen::Vector2d;
 
-TEST_CASE("a floating rigid box settles at the draft buoyancy predicts", "[coupling]")
+namespace
+{
+struct Draft
+{
+  double mean, expected, drift;
+};
+
+/// The floating box of the header, its skin seen by the fluid as `skin`.
+Draft floating_draft(sph::WallModel skin, double dp)
 {
   // Multiples of the spacing: the fluid blocks meet the box faces on the lattice.
-  const double dp = 0.002, basin_width = 0.3, depth = 0.1;
+  const double basin_width = 0.3, depth = 0.1;
   const double box_width = 0.1, box_height = 0.048, box_density = 500, water = 1000;
   const double expected = box_density / water * box_height;
   const double left = 0.1, right = left + box_width, bottom0 = depth - expected;
@@ -60,7 +71,7 @@ TEST_CASE("a floating rigid box settles at the draft buoyancy predicts", "[coupl
   auto box = coupling::make_coupled_body(d, c.fluid.gravity);
 
   coupling::CoSimulation<2> cosim(*fluid);
-  cosim.add_body(*box, d.name, sph::WallModel::lennard_jones);
+  cosim.add_body(*box, d.name, skin);
 
   double sum = 0, weight = 0, lowest = 1, highest = 0, drift = 0;
   while (cosim.time() < 1.6)
@@ -76,10 +87,24 @@ TEST_CASE("a floating rigid box settles at the draft buoyancy predicts", "[coupl
     drift = std::max(drift, std::abs(box->probe_position().x() - 0.5 * (left + right)));
   }
   const double bottom = sum / weight;
-  const double draft = depth - bottom;
-  INFO("mean box bottom " << bottom << " m (range " << lowest << " ... " << highest << "), draft "
-                          << draft << " m, Archimedes " << expected << " m, drift " << drift
-                          << " m");
-  CHECK(draft == Approx(expected).epsilon(0.02));
-  CHECK(drift < 0.02); // it floats in place
+  UNSCOPED_INFO("mean box bottom " << bottom << " m (range " << lowest << " ... " << highest
+                                   << "), draft " << depth - bottom << " m, Archimedes " << expected
+                                   << " m, drift " << drift << " m");
+  return {depth - bottom, expected, drift};
+}
+} // namespace
+
+TEST_CASE("a floating rigid box settles at the draft buoyancy predicts", "[coupling]")
+{
+  const Draft d = floating_draft(sph::WallModel::dummy_particles, 0.004);
+  CHECK(d.mean == Approx(d.expected).epsilon(0.02));
+  CHECK(d.drift < 0.02); // it floats in place
+}
+
+TEST_CASE("a floating box with a Lennard-Jones skin: draft within its O(dp) offset", "[coupling]")
+{
+  const Draft d = floating_draft(sph::WallModel::lennard_jones, 0.004);
+  CHECK(d.mean == Approx(d.expected).epsilon(0.05));
+  CHECK(d.mean > d.expected); // the offset's measured sign: deeper, never shallower
+  CHECK(d.drift < 0.02);
 }
