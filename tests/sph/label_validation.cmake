@@ -2,4 +2,4 @@
 set_tests_properties(
   "hydrostatic tank: pressure within 2 % of rho g (H - y) and walls hold"
   "dam break surge front follows Martin and Moyce 1952"
-  PROPERTIES LABELS "sph;validation")
+  PROPERTIES LABELS "sph;validation" PROCESSORS 2)
