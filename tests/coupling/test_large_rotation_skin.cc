@@ -82,14 +82,13 @@ Vector tip_displacement(mbs::FloatingFrameBody<2>& body, Skin& skin, const Vecto
 {
   const auto& skin_ids = body.skin_node_ids();
   const auto& tip = body.node_set("tip");
+  std::vector<std::size_t> on_tip; // skin indices of the tip nodes
+  for (std::size_t i = 0; i < skin_ids.size(); ++i)
+    if (std::find(tip.begin(), tip.end(), skin_ids[i]) != tip.end())
+      on_tip.push_back(i);
   std::vector<Vector> full(skin_ids.size(), Vector::Zero());
-  int n_tip = 0;
-  for (std::size_t i = 0; i < skin_ids.size(); ++i)
-    if (std::find(tip.begin(), tip.end(), skin_ids[i]) != tip.end())
-      ++n_tip;
-  for (std::size_t i = 0; i < skin_ids.size(); ++i)
-    if (std::find(tip.begin(), tip.end(), skin_ids[i]) != tip.end())
-      full[i] = load / n_tip;
+  for (std::size_t i : on_tip)
+    full[i] = load / double(on_tip.size());
   std::vector<Vector> f = full;
 
   const int m = body.n_modes();

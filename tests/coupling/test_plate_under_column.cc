@@ -59,8 +59,9 @@ std::string plate_body_file()
 }
 
 /// Static x displacement of the tip (mean of the `tip` set) of the reduced body under
-/// p(y) = rho g (H - y) on its x = 0 face: nodal loads by the trapezoidal rule on the
-/// skin segments, exact for the linear pressure on straight segments.
+/// p(y) = rho g (H - y) on its x = 0 face: consistent nodal loads of the linear shape
+/// functions on the skin segments (2-point Gauss on each piece below and above the
+/// surface, exact for the piecewise-linear pressure).
 double static_tip_displacement(const ReducedBodyData& data)
 {
   mbs::FloatingFrameBody<2> body(data);
