@@ -12,7 +12,7 @@ DirectSolver::DirectSolver(double c_k, const dealii::PETScWrappers::MPI::SparseM
   if (c_k != 1)
     CHIPFLEX_PETSC_CHECK(MatScale(matrix, c_k));
   if (c_m != 0)
-    CHIPFLEX_PETSC_CHECK(MatAXPY(matrix, c_m, m, SAME_NONZERO_PATTERN));
+    CHIPFLEX_PETSC_CHECK(MatAXPY(matrix, c_m, m, SUBSET_NONZERO_PATTERN));
   CHIPFLEX_PETSC_CHECK(MatSetOption(matrix, MAT_SYMMETRIC, PETSC_TRUE));
   CHIPFLEX_PETSC_CHECK(KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(k)), &ksp));
   CHIPFLEX_PETSC_CHECK(KSPSetOptionsPrefix(ksp, "chipflex_direct_"));

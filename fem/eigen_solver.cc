@@ -37,6 +37,8 @@ EigenSolution solve_eigenproblem(const dealii::PETScWrappers::MPI::SparseMatrix&
     ST st;
     CHIPFLEX_PETSC_CHECK(EPSGetST(eps, &st));
     CHIPFLEX_PETSC_CHECK(STSetType(st, STSINVERT));
+    // M's entries are a subset of K's (fem/elastic_body.cc): K - target M keeps K's pattern.
+    CHIPFLEX_PETSC_CHECK(STSetMatStructure(st, SUBSET_NONZERO_PATTERN));
     KSP ksp;
     CHIPFLEX_PETSC_CHECK(STGetKSP(st, &ksp));
     CHIPFLEX_PETSC_CHECK(KSPSetType(ksp, KSPPREONLY));

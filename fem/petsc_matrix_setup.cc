@@ -7,9 +7,11 @@
 
 namespace chipflex::fem
 {
-void reinit_from_pattern(dealii::PETScWrappers::MPI::SparseMatrix& matrix,
-                         const dealii::DynamicSparsityPattern& pattern,
-                         const dealii::IndexSet& owned, MPI_Comm communicator)
+void reinit_from_pattern(
+    dealii::PETScWrappers::MPI::SparseMatrix& matrix, const dealii::DynamicSparsityPattern& pattern,
+    const dealii::IndexSet& owned, MPI_Comm communicator,
+    const std::function<bool(dealii::types::global_dof_index, dealii::types::global_dof_index)>&
+        keep)
 {
   if (!owned.is_contiguous())
     throw std::logic_error("PETSc matrices need one contiguous range of rows per process");
@@ -22,12 +24,17 @@ void reinit_from_pattern(dealii::PETScWrappers::MPI::SparseMatrix& matrix,
   const auto n_local = owned.n_elements();
   const auto first = owned.n_elements() ? *owned.begin() : 0;
   std::vector<PetscInt> row_start(n_local + 1, 0), columns;
+  std::size_t n_entries = 0;
   for (dealii::types::global_dof_index r = 0; r < n_local; ++r)
-    row_start[r + 1] = row_start[r] + pattern.row_length(first + r);
-  columns.reserve(row_start.back());
+    n_entries += pattern.row_length(first + r);
+  columns.reserve(keep ? n_entries / 2 : n_entries);
   for (dealii::types::global_dof_index r = 0; r < n_local; ++r)
+  {
     for (auto entry = pattern.begin(first + r); entry != pattern.end(first + r); ++entry)
-      columns.push_back(entry->column());
+      if (!keep || keep(first + r, entry->column()))
+        columns.push_back(entry->column());
+    row_start[r + 1] = columns.size();
+  }
   CHIPFLEX_PETSC_CHECK(MatCreate(communicator, &petsc));
   CHIPFLEX_PETSC_CHECK(MatSetSizes(petsc, n_local, n_local, owned.size(), owned.size()));
   CHIPFLEX_PETSC_CHECK(MatSetType(petsc, MATMPIAIJ));
