@@ -4,8 +4,33 @@
 
 namespace chipflex::fem
 {
+MumpsCholesky::MumpsCholesky(PC pc, unsigned int node_block_size)
+{
+  CHIPFLEX_PETSC_CHECK(PCSetType(pc, PCCHOLESKY));
+  CHIPFLEX_PETSC_CHECK(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  if (node_block_size < 2)
+    return;
+  const char* prefix = nullptr;
+  CHIPFLEX_PETSC_CHECK(PCGetOptionsPrefix(pc, &prefix));
+  const std::string name = std::string("-") + (prefix ? prefix : "") + "mat_mumps_icntl_15";
+  PetscBool given;
+  CHIPFLEX_PETSC_CHECK(PetscOptionsHasName(nullptr, nullptr, name.c_str(), &given));
+  if (given)
+    return;
+  CHIPFLEX_PETSC_CHECK(
+      PetscOptionsSetValue(nullptr, name.c_str(), std::to_string(-int(node_block_size)).c_str()));
+  option_set = name;
+}
+
+MumpsCholesky::~MumpsCholesky()
+{
+  if (!option_set.empty())
+    PetscOptionsClearValue(nullptr, option_set.c_str());
+}
+
 DirectSolver::DirectSolver(double c_k, const dealii::PETScWrappers::MPI::SparseMatrix& stiffness,
-                           double c_m, const dealii::PETScWrappers::MPI::SparseMatrix& mass)
+                           double c_m, const dealii::PETScWrappers::MPI::SparseMatrix& mass,
+                           unsigned int node_block_size)
 {
   const Mat k = stiffness, m = mass;
   CHIPFLEX_PETSC_CHECK(MatDuplicate(k, MAT_COPY_VALUES, &matrix));
@@ -20,8 +45,7 @@ DirectSolver::DirectSolver(double c_k, const dealii::PETScWrappers::MPI::SparseM
   CHIPFLEX_PETSC_CHECK(KSPSetType(ksp, KSPPREONLY));
   PC pc;
   CHIPFLEX_PETSC_CHECK(KSPGetPC(ksp, &pc));
-  CHIPFLEX_PETSC_CHECK(PCSetType(pc, PCCHOLESKY));
-  CHIPFLEX_PETSC_CHECK(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  const MumpsCholesky mumps(pc, node_block_size);
   CHIPFLEX_PETSC_CHECK(KSPSetFromOptions(ksp));
   CHIPFLEX_PETSC_CHECK(KSPSetUp(ksp));
 }

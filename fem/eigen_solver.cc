@@ -1,5 +1,6 @@
 #include "fem/eigen_solver.h"
 
+#include "fem/direct_solver.h"
 #include "fem/petsc_check.h"
 
 #include <algorithm>
@@ -12,7 +13,8 @@ namespace chipflex::fem
 EigenSolution solve_eigenproblem(const dealii::PETScWrappers::MPI::SparseMatrix& stiffness,
                                  const dealii::PETScWrappers::MPI::SparseMatrix& mass,
                                  unsigned int count, double target,
-                                 const dealii::PETScWrappers::MPI::Vector& layout)
+                                 const dealii::PETScWrappers::MPI::Vector& layout,
+                                 unsigned int node_block_size)
 {
   using clock = std::chrono::steady_clock;
   const Mat k = stiffness, m = mass;
@@ -44,8 +46,7 @@ EigenSolution solve_eigenproblem(const dealii::PETScWrappers::MPI::SparseMatrix&
     CHIPFLEX_PETSC_CHECK(KSPSetType(ksp, KSPPREONLY));
     PC pc;
     CHIPFLEX_PETSC_CHECK(KSPGetPC(ksp, &pc));
-    CHIPFLEX_PETSC_CHECK(PCSetType(pc, PCCHOLESKY));
-    CHIPFLEX_PETSC_CHECK(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+    const MumpsCholesky mumps(pc, node_block_size);
     CHIPFLEX_PETSC_CHECK(EPSSetFromOptions(eps));
 
     // EPSSetUp factorises K - target M; timed apart from the Krylov-Schur iteration.

@@ -17,9 +17,11 @@ struct EigenSolution
   double factorisation_seconds = 0, solve_seconds = 0;
 };
 
-/// The `count` eigenpairs nearest `target` (relative residual tolerance 1e-10).
+/// The `count` eigenpairs nearest `target` (relative residual tolerance 1e-8).
+/// `node_block_size`: see use_mumps_cholesky (fem/direct_solver.h).
 EigenSolution solve_eigenproblem(const dealii::PETScWrappers::MPI::SparseMatrix& stiffness,
                                  const dealii::PETScWrappers::MPI::SparseMatrix& mass,
                                  unsigned int count, double target,
-                                 const dealii::PETScWrappers::MPI::Vector& layout);
+                                 const dealii::PETScWrappers::MPI::Vector& layout,
+                                 unsigned int node_block_size);
 } // namespace chipflex::fem

@@ -173,6 +173,10 @@ void ElasticBody<dim>::number_nodes()
       }
     }
   }
+  node_block_size = dim;
+  for (std::size_t k = 0; k < dof_of_node.size(); ++k)
+    if (dof_of_node[k] != dof_of_node[k - k % dim] + k % dim || dof_of_node[k - k % dim] % dim)
+      node_block_size = 1;
 }
 
 template <int dim>

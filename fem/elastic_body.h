@@ -90,6 +90,9 @@ public:
   std::vector<std::array<double, 3>> node_coordinates;
   std::vector<types::global_dof_index> dof_of_node; ///< index node*dim + component
   std::vector<int> node_of_dof;                     ///< -1 never happens after setup
+  /// dim when every node's DoFs are dim consecutive indices from a multiple of dim (the
+  /// sparse direct solver then orders nodes, not DoFs: fem/direct_solver.h), else 1.
+  unsigned int node_block_size = 1;
   std::vector<typename DoFHandler<dim>::active_cell_iterator> cells; ///< by active index
   std::map<std::string, std::vector<int>> node_sets;
   std::vector<int> skin_nodes;

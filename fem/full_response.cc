@@ -127,7 +127,8 @@ CompareResult compare(const GmshMeshData& mesh, const ReducedBodyData& reduced,
   t0 = clock::now();
   auto u = body.new_vector();
   {
-    const DirectSolver solver(1, body.stiffness_matrix, 0, body.mass_matrix);
+    const DirectSolver solver(1, body.stiffness_matrix, 0, body.mass_matrix,
+                              body.node_block_size);
     solver.solve(force, u);
   }
   result.static_full = centroid(u);
@@ -136,8 +137,10 @@ CompareResult compare(const GmshMeshData& mesh, const ReducedBodyData& reduced,
     // Consistent initial acceleration: the step load acts from t = 0, M a(0) = f.
     auto v = body.new_vector(), a = body.new_vector(), u_new = body.new_vector(),
          combination = body.new_vector(), rhs = body.new_vector();
-    DirectSolver(0, body.stiffness_matrix, 1, body.mass_matrix).solve(force, a);
-    const DirectSolver solver(1, body.stiffness_matrix, c.a0, body.mass_matrix);
+    DirectSolver(0, body.stiffness_matrix, 1, body.mass_matrix, body.node_block_size)
+        .solve(force, a);
+    const DirectSolver solver(1, body.stiffness_matrix, c.a0, body.mass_matrix,
+                              body.node_block_size);
     u = 0;
     result.transient_full.resize(n_steps + 1, dim);
     result.transient_full.row(0) = centroid(u).transpose();

@@ -126,7 +126,8 @@ void ModalReduction<dim>::compute_normal_modes(ReductionTimings& timings)
                                     " modes; the mesh has only " + std::to_string(n_free) +
                                     " free DoFs");
   auto solution =
-      solve_eigenproblem(body.stiffness_matrix, body.mass_matrix, n_wanted, target, layout);
+      solve_eigenproblem(body.stiffness_matrix, body.mass_matrix, n_wanted, target, layout,
+                         body.node_block_size);
   timings.factorisation = solution.factorisation_seconds;
   timings.eigen_solve = solution.solve_seconds;
 
@@ -164,7 +165,8 @@ void ModalReduction<dim>::compute_static_modes(ReductionTimings&)
   if (rigid.cols())
     alpha = std::max(eigenvalues.empty() ? 0. : 1e-3 * eigenvalues.front(),
                      1e-10 * diagonal_ratio(body.stiffness_matrix, body.mass_matrix, layout));
-  const DirectSolver solver(1, body.stiffness_matrix, alpha, body.mass_matrix);
+  const DirectSolver solver(1, body.stiffness_matrix, alpha, body.mass_matrix,
+                            body.node_block_size);
   for (const auto& load : static_cases)
   {
     Eigen::VectorXd f = body.to_nodal(body.load_vector(load));
