@@ -74,6 +74,18 @@ int reduce_benchmark(const Arguments& args)
   MPI_Bcast(&pid, 1, MPI_INT, 0, MPI_COMM_WORLD);
   const std::string stem = "chipflex_bench_reduce_" + std::to_string(pid);
   const std::string mesh = stem + ".msh", body_file = stem + ".h5";
+  // Removed however the benchmark ends (a failed reduction throws past the clean-up).
+  struct RemoveOnExit
+  {
+    std::vector<std::string> paths;
+    bool owner;
+    ~RemoveOnExit()
+    {
+      if (owner)
+        for (const auto& p : paths)
+          std::remove(p.c_str());
+    }
+  } scratch_files{{mesh, body_file}, rank == 0};
   using clock = std::chrono::steady_clock;
   auto t0 = clock::now();
   if (rank == 0)
@@ -118,8 +130,6 @@ int reduce_benchmark(const Arguments& args)
   getrusage(RUSAGE_SELF, &usage);
   if (rank == 0)
   {
-    std::remove(mesh.c_str());
-    std::remove(body_file.c_str());
     std::cout << std::fixed << std::setprecision(2)
               << "reduce benchmark: 3D strip 0.24 x 0.013 x 0.004 m, quadratic hexahedra, "
               << timings.n_cells << " cells, " << timings.n_dofs << " DoFs, " << modes << " modes, "
