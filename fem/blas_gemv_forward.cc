@@ -46,36 +46,42 @@ Gemm library_gemm()
   return gemm;
 }
 
-bool is_no_transpose(const char* flag) { return *flag == 'N' || *flag == 'n'; }
+bool is_no_transpose(const char* flag)
+{
+  return *flag == 'N' || *flag == 'n';
+}
 } // namespace
 
 extern "C"
 {
-void dgemv_(const char* trans, const int* m, const int* n, const double* alpha, const double* a,
-            const int* lda, const double* x, const int* incx, const double* beta, double* y,
-            const int* incy);
+  void dgemv_(const char* trans, const int* m, const int* n, const double* alpha, const double* a,
+              const int* lda, const double* x, const int* incx, const double* beta, double* y,
+              const int* incy);
 
-void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k,
-            const double* alpha, const double* a, const int* lda, const double* b,
-            const int* ldb, const double* beta, double* c, const int* ldc)
-{
-  // k = 0 must still scale C by beta, which dgemv's quick return would skip.
-  if (*n != 1 || *m <= 0 || *k <= 0)
+  void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k,
+              const double* alpha, const double* a, const int* lda, const double* b, const int* ldb,
+              const double* beta, double* c, const int* ldc)
   {
-    library_gemm()(transa, transb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
-    return;
+    // k = 0 must still scale C by beta, which dgemv's quick return would skip.
+    if (*n != 1 || *m <= 0 || *k <= 0)
+    {
+      library_gemm()(transa, transb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
+      return;
+    }
+    forwarded.fetch_add(1, std::memory_order_relaxed);
+    // op(B) is k x 1: a column of B (stride 1) or a row of B (stride ldb).
+    const int increment_b = is_no_transpose(transb) ? 1 : *ldb, one = 1;
+    if (is_no_transpose(transa)) // A is m x k
+      dgemv_("N", m, k, alpha, a, lda, b, &increment_b, beta, c, &one);
+    else // A is k x m
+      dgemv_("T", k, m, alpha, a, lda, b, &increment_b, beta, c, &one);
   }
-  forwarded.fetch_add(1, std::memory_order_relaxed);
-  // op(B) is k x 1: a column of B (stride 1) or a row of B (stride ldb).
-  const int increment_b = is_no_transpose(transb) ? 1 : *ldb, one = 1;
-  if (is_no_transpose(transa)) // A is m x k
-    dgemv_("N", m, k, alpha, a, lda, b, &increment_b, beta, c, &one);
-  else // A is k x m
-    dgemv_("T", k, m, alpha, a, lda, b, &increment_b, beta, c, &one);
-}
 }
 
 namespace chipflex::fem
 {
-long forwarded_gemm_calls() { return forwarded.load(); }
+long forwarded_gemm_calls()
+{
+  return forwarded.load();
+}
 } // namespace chipflex::fem

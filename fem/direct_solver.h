@@ -35,8 +35,7 @@ public:
   /// Factorises c_k K + c_m M now. Options prefix `chipflex_direct_`.
   /// `node_block_size`: see use_mumps_cholesky.
   DirectSolver(double c_k, const dealii::PETScWrappers::MPI::SparseMatrix& stiffness, double c_m,
-               const dealii::PETScWrappers::MPI::SparseMatrix& mass,
-               unsigned int node_block_size);
+               const dealii::PETScWrappers::MPI::SparseMatrix& mass, unsigned int node_block_size);
   ~DirectSolver();
   DirectSolver(const DirectSolver&) = delete;
   DirectSolver& operator=(const DirectSolver&) = delete;

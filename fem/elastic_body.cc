@@ -140,7 +140,8 @@ void ElasticBody<dim>::setup_system()
     component[dof_of_node[k]] = k % dim;
   reinit_from_pattern(mass_matrix, dsp, locally_owned_dofs, communicator,
                       [&](auto row, auto column) { return component[row] == component[column]; });
-  CHIPFLEX_PETSC_CHECK(MatSetOption(mass_matrix.petsc_matrix(), MAT_IGNORE_ZERO_ENTRIES, PETSC_TRUE));
+  CHIPFLEX_PETSC_CHECK(
+      MatSetOption(mass_matrix.petsc_matrix(), MAT_IGNORE_ZERO_ENTRIES, PETSC_TRUE));
 }
 
 template <int dim>

@@ -127,8 +127,7 @@ CompareResult compare(const GmshMeshData& mesh, const ReducedBodyData& reduced,
   t0 = clock::now();
   auto u = body.new_vector();
   {
-    const DirectSolver solver(1, body.stiffness_matrix, 0, body.mass_matrix,
-                              body.node_block_size);
+    const DirectSolver solver(1, body.stiffness_matrix, 0, body.mass_matrix, body.node_block_size);
     solver.solve(force, u);
   }
   result.static_full = centroid(u);

@@ -125,9 +125,8 @@ void ModalReduction<dim>::compute_normal_modes(ReductionTimings& timings)
     throw InputError("--modes", "asks for " + std::to_string(n_modes) +
                                     " modes; the mesh has only " + std::to_string(n_free) +
                                     " free DoFs");
-  auto solution =
-      solve_eigenproblem(body.stiffness_matrix, body.mass_matrix, n_wanted, target, layout,
-                         body.node_block_size);
+  auto solution = solve_eigenproblem(body.stiffness_matrix, body.mass_matrix, n_wanted, target,
+                                     layout, body.node_block_size);
   timings.factorisation = solution.factorisation_seconds;
   timings.eigen_solve = solution.solve_seconds;
 

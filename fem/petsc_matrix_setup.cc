@@ -7,11 +7,11 @@
 
 namespace chipflex::fem
 {
-void reinit_from_pattern(
-    dealii::PETScWrappers::MPI::SparseMatrix& matrix, const dealii::DynamicSparsityPattern& pattern,
-    const dealii::IndexSet& owned, MPI_Comm communicator,
-    const std::function<bool(dealii::types::global_dof_index, dealii::types::global_dof_index)>&
-        keep)
+void reinit_from_pattern(dealii::PETScWrappers::MPI::SparseMatrix& matrix,
+                         const dealii::DynamicSparsityPattern& pattern,
+                         const dealii::IndexSet& owned, MPI_Comm communicator,
+                         const std::function<bool(dealii::types::global_dof_index,
+                                                  dealii::types::global_dof_index)>& keep)
 {
   if (!owned.is_contiguous())
     throw std::logic_error("PETSc matrices need one contiguous range of rows per process");

@@ -21,9 +21,9 @@ namespace chipflex::fem
 /// locally owned rows of `pattern` (already distributed), all zero. Inserting outside
 /// the pattern is an error (MAT_NEW_NONZERO_ALLOCATION_ERR). With `keep`, only the
 /// entries (row, column) for which it is true.
-void reinit_from_pattern(
-    dealii::PETScWrappers::MPI::SparseMatrix& matrix, const dealii::DynamicSparsityPattern& pattern,
-    const dealii::IndexSet& owned, MPI_Comm communicator,
-    const std::function<bool(dealii::types::global_dof_index, dealii::types::global_dof_index)>&
-        keep = {});
+void reinit_from_pattern(dealii::PETScWrappers::MPI::SparseMatrix& matrix,
+                         const dealii::DynamicSparsityPattern& pattern,
+                         const dealii::IndexSet& owned, MPI_Comm communicator,
+                         const std::function<bool(dealii::types::global_dof_index,
+                                                  dealii::types::global_dof_index)>& keep = {});
 } // namespace chipflex::fem

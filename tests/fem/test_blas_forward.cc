@@ -11,8 +11,8 @@
 #include <vector>
 
 extern "C" void dgemm_(const char*, const char*, const int*, const int*, const int*, const double*,
-                       const double*, const int*, const double*, const int*, const double*,
-                       double*, const int*);
+                       const double*, const int*, const double*, const int*, const double*, double*,
+                       const int*);
 
 using namespace chipflex::fem;
 using namespace chipflex::fem::testing;
