@@ -2,6 +2,8 @@
 
 #include "common/input_error.h"
 
+#include <cmath>
+
 namespace chipflex::mbs
 {
 template <int dim>
@@ -46,21 +48,46 @@ ReducedBodyData rigid_body_data(double mass, const Eigen::Matrix<double, dim, 1>
   return d;
 }
 
-ReducedBodyData rectangular_link_data(double length, double thickness, double density)
+ReducedBodyData rectangular_link_data(double length, double thickness, double density,
+                                      const LinkEnds& ends)
 {
   if (length <= 0 || thickness <= 0 || density <= 0)
     throw InputError("rectangular link", "length, thickness and density must be positive");
+  if ((ends.round_top || ends.round_bottom) && ends.arc_segments < 2)
+    throw InputError("rectangular link", "a rounded end needs at least 2 arc segments");
   const double mass = density * length * thickness;
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
   inertia(2, 2) = mass * (length * length + thickness * thickness) / 12.0;
   const double h = 0.5 * thickness;
-  // counter-clockwise outline: outward normals (dy, -dx)
-  const std::vector<Eigen::Vector2d> nodes = {{-h, -length}, {h, -length}, {h, 0.0}, {-h, 0.0}};
-  const std::vector<std::array<int, 2>> faces = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  // Counter-clockwise outline (outward normals (dy, -dx)): bottom edge left to right, up
+  // the right side, over the top, down the left side. A rounded end replaces its edge by
+  // the half circle about the hinge, from angle a0 to a0 + pi.
+  std::vector<Eigen::Vector2d> nodes;
+  const auto half_circle = [&](const Eigen::Vector2d& centre, double a0)
+  {
+    for (int k = 1; k < ends.arc_segments; ++k)
+    {
+      const double a = a0 + M_PI * k / ends.arc_segments;
+      nodes.push_back(centre + h * Eigen::Vector2d(std::cos(a), std::sin(a)));
+    }
+  };
+  nodes.push_back({-h, -length});
+  if (ends.round_bottom)
+    half_circle({0.0, -length}, M_PI);
+  nodes.push_back({h, -length});
+  nodes.push_back({h, 0.0});
+  if (ends.round_top)
+    half_circle({0.0, 0.0}, 0.0);
+  nodes.push_back({-h, 0.0});
+  const int n = static_cast<int>(nodes.size());
+  std::vector<std::array<int, 2>> faces;
+  for (int i = 0; i < n; ++i)
+    faces.push_back({i, (i + 1) % n});
   ReducedBodyData d =
       rigid_body_data<2>(mass, Eigen::Vector2d(0.0, -0.5 * length), inertia, nodes, faces);
-  d.node_sets["tip"] = {0, 1};
-  d.node_sets["clamp"] = {2, 3};
+  const int bottom_right = ends.round_bottom ? ends.arc_segments : 1;
+  d.node_sets["tip"] = {0, bottom_right};
+  d.node_sets["clamp"] = {bottom_right + 1, n - 1};
   return d;
 }
 

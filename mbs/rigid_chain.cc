@@ -37,10 +37,13 @@ RigidChain add_rigid_chain(MultibodySystem<2>& system, const RigidChainGate& gat
   RigidChain chain;
   chain.link_length = gate.total_length / gate.n_links;
   const double l = chain.link_length;
-  const ReducedBodyData link = rectangular_link_data(l, gate.thickness, gate.density);
   for (int i = 0; i < gate.n_links; ++i)
   {
-    auto body = make_rigid_body<2>(link);
+    // Every link turns about its top hinge; all but the last also about the one below.
+    LinkEnds ends;
+    ends.round_top = gate.rounded_hinges;
+    ends.round_bottom = gate.rounded_hinges && i + 1 < gate.n_links;
+    auto body = make_rigid_body<2>(rectangular_link_data(l, gate.thickness, gate.density, ends));
     body->set_pose(gate.clamp_point - Eigen::Vector2d(0.0, i * l), 0.0);
     const int b = system.add_body(std::move(body));
     const int above = i == 0 ? Joint<2>::ground : chain.links.back();

@@ -19,6 +19,8 @@ struct RigidChainGate
   double spring_rate = 3.95;   ///< Nm/rad per metre of depth, at every joint
   double spring_damping = 0;   ///< Nms/rad per metre of depth
   Eigen::Vector2d clamp_point = Eigen::Vector2d::Zero(); ///< top hinge in the world
+  /// Round the links' hinge ends (LinkEnds), so that no gap opens at a joint as it turns.
+  bool rounded_hinges = true;
 
   /// Table 2 of the seed paper: 1 link 79 mm 3.95 Nm; 2 links 39.5 mm 3.95 Nm;
   /// 3 links 26.33 mm 2.633 Nm. InputError for other n.

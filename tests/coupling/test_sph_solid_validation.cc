@@ -1,55 +1,164 @@
-// The SPH solid gate model (Gray, Monaghan & Swift 2001) against Euler-Bernoulli: the
-// first bending frequency of a clamped strip in plane strain,
-// f1 = 1.8751^2 / (2 pi L^2) sqrt(E t^2 / (12 rho (1 - nu^2))). About a minute: CTest
-// label `validation`.
+// The SPH solid gate model (Gray, Monaghan & Swift 2001) against beam theory, clamped
+// strip in plane strain (E' = E / (1 - nu^2), I = t^3 / 12 per metre):
+//   first bending frequency  f1 = 1.8751^2 / (2 pi L^2) sqrt(E' I / (rho t)),
+//   tip deflection under a uniform load q: w = q L^4 / (8 E' I) (Euler-Bernoulli; shear
+//   adds 0.5 % at t / L = 0.063),
+//   and, at the gate's range of deflection, the elastica under a tip load.
+// About two and a half minutes: CTest label `validation`.
+//
+// What it shows: at Table 1's resolution (six layers across 5 mm) the SPH strip is softer
+// than the continuum, by 16-21 % in stiffness, seen alike in the frequency (8 % low), in
+// the small static deflection (26 % high) and in the large one (25 % beyond the
+// elastica). Kernels truncated at the two free surfaces carry less bending stress than
+// the continuum. This is the seed's model, kept as specified (docs/coupling.md).
 
 #include "coupling/sph_solid_body.h"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 
 using chipflex::coupling::SphSolidBody;
 using Vector = Eigen::Vector2d;
 
-TEST_CASE("SPH solid gate: first bending frequency as Euler-Bernoulli (plane strain)",
+namespace
+{
+/// Downward crossings of `level` in the sampled history (linear interpolation).
+std::vector<double> downward_crossings(const std::vector<double>& t, const std::vector<double>& w,
+                                       double level)
+{
+  std::vector<double> c;
+  for (std::size_t k = 1; k < w.size(); ++k)
+    if (w[k - 1] > level && w[k] <= level)
+      c.push_back(t[k - 1] + (t[k] - t[k - 1]) * (w[k - 1] - level) / (w[k - 1] - w[k]));
+  return c;
+}
+} // namespace
+
+TEST_CASE("SPH solid gate: stiffness in frequency and statics against Euler-Bernoulli",
           "[coupling][validation]")
 {
   chipflex::sph::SolidMaterial material; // Table 1
   chipflex::sph::SolidStripLayout layout;
   layout.direction = Vector(1, 0); // horizontal cantilever, no gravity
   SphSolidBody body(material, layout, 1.3, Vector::Zero());
+  const double L = layout.length, t = layout.thickness, rho = material.density,
+               nu = material.poisson_ratio;
+  const double EI = material.youngs_modulus / (1 - nu * nu) * t * t * t / 12;
+  const double f_beam = 1.8751 * 1.8751 / (2 * M_PI * L * L) * std::sqrt(EI / (rho * t));
+  const double q = 6;                                  // N/m, downward on the upper face
+  const double w_beam = q * std::pow(L, 4) / (8 * EI); // 0.20 mm: linear range
 
-  // Start from rest with a velocity in the shape of the static tip-load deflection,
-  // which is 97 % first mode; the tip's zero crossings give the period.
-  const double L = layout.length, E = material.youngs_modulus, nu = material.poisson_ratio;
-  auto solid_state = body.state();
-  const auto& x = body.solid().positions();
-  const std::size_t per = 2 * 2 + 1 + 4;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (!body.solid().is_fixed(static_cast<int>(i)))
-    {
-      const double s = x[i].x() / L;
-      solid_state[i * per + 3] = 0.05 * s * s * (3 - s) / 2; // v_y
-    }
-  body.restore(solid_state);
-
-  const double f_beam =
-      1.8751 * 1.8751 / (2 * M_PI * L * L) *
-      std::sqrt(E * std::pow(layout.thickness, 2) / (12 * material.density * (1 - nu * nu)));
-  const double dt = 1e-4;
-  double previous = body.probe_position().y(), t = 0;
-  std::vector<double> crossings;
-  while (crossings.size() < 3 && t < 5 / f_beam)
+  // The load on the upper side's faces (skin nodes above the centre line), lumped onto
+  // their end nodes by face length.
+  std::vector<Vector> x, f_full(body.n_skin_nodes(), Vector::Zero());
+  body.skin_positions(x);
+  for (const auto& face : body.skin_faces())
   {
-    body.advance(dt);
-    t += dt;
-    const double y = body.probe_position().y();
-    if (previous > 0 && y <= 0) // downward crossings, one per period
-      crossings.push_back(t - dt * y / (y - previous));
-    previous = y;
+    const Vector a = x[face[0]], b = x[face[1]];
+    if (a.y() > 0 && b.y() > 0)
+    {
+      const double half = 0.5 * q * std::abs(b.x() - a.x());
+      f_full[face[0]].y() -= half;
+      f_full[face[1]].y() -= half;
+    }
   }
-  REQUIRE(crossings.size() == 3);
-  const double f_sph = 2 / (crossings[2] - crossings[0]);
-  INFO("SPH " << f_sph << " Hz, beam " << f_beam << " Hz");
-  CHECK(f_sph == Approx(f_beam).epsilon(0.05)); // measured: 14.37 vs 14.75 Hz
+  // Ramp the load over 1.5 beam periods: it leaves a free first-mode oscillation of about
+  // a fifth of the deflection, whose period is the frequency and whose mean over whole
+  // periods is the static deflection.
+  const double y0 = body.probe_position().y(), ramp = 1.5 / f_beam, dt = 1e-4;
+  std::vector<double> times, w;
+  double time = 0;
+  while (time < ramp + 3.6 / f_beam)
+  {
+    const double scale = std::min(1.0, (time + 0.5 * dt) / ramp);
+    std::vector<Vector> f(f_full);
+    for (auto& fk : f)
+      fk *= scale;
+    body.set_skin_forces(f);
+    body.advance(dt);
+    time += dt;
+    if (time > ramp)
+    {
+      times.push_back(time);
+      w.push_back(y0 - body.probe_position().y());
+    }
+  }
+  const auto [lo, hi] = std::minmax_element(w.begin(), w.end());
+  const std::vector<double> rough = downward_crossings(times, w, 0.5 * (*lo + *hi));
+  REQUIRE(rough.size() >= 3);
+  const double period = (rough.back() - rough.front()) / double(rough.size() - 1);
+  double sum = 0;
+  int n = 0;
+  for (std::size_t k = 0; k < times.size(); ++k)
+    if (times[k] >= rough.front() && times[k] < rough.back())
+    {
+      sum += w[k];
+      ++n;
+    }
+  const double w_sph = sum / n, f_sph = 1 / period;
+  INFO("frequency: SPH " << f_sph << " Hz, beam " << f_beam << " Hz; tip deflection: SPH "
+                         << w_sph * 1e3 << " mm, beam " << w_beam * 1e3 << " mm");
+  // Measured: 13.53 Hz against 14.75 Hz, 0.248 mm against 0.196 mm. Softer than the
+  // continuum, but within 12 % in frequency and 35 % in deflection (plane stress, 19 %
+  // softer again, or a wrong shear modulus would be outside).
+  CHECK(f_sph < f_beam);
+  CHECK(f_sph > 0.88 * f_beam);
+  CHECK(w_sph > w_beam);
+  CHECK(w_sph < 1.35 * w_beam);
+  // One softness behind both: the static compliance ratio is about the squared frequency
+  // ratio, as for a linear structure whose static shape is almost its first mode
+  // (measured 1.26 against 1.19).
+  CHECK(w_sph / w_beam == Approx(std::pow(f_beam / f_sph, 2)).epsilon(0.1));
+}
+
+TEST_CASE("SPH solid gate: large deflection under a tip load against the elastica",
+          "[coupling][validation]")
+{
+  // A dead tip load P = alpha EI / L^2 normal to the axis with alpha = 2 bends the strip
+  // as far as the flow bends the gate (tip 39 mm across). Elastica (Mattiasson 1981,
+  // Table 1): the tip moves 0.4935 L across and 0.1606 L back along the axis.
+  chipflex::sph::SolidMaterial material; // Table 1
+  chipflex::sph::SolidStripLayout layout;
+  layout.direction = Vector(1, 0); // horizontal cantilever, no gravity
+  SphSolidBody body(material, layout, 1.3, Vector::Zero());
+  const double L = layout.length, t = layout.thickness, nu = material.poisson_ratio;
+  const double EI = material.youngs_modulus / (1 - nu * nu) * t * t * t / 12;
+  const double alpha = 2, P = alpha * EI / (L * L);
+  const auto& tip_nodes = body.skin_map().tip_nodes;
+  std::vector<Vector> f_full(body.n_skin_nodes(), Vector::Zero());
+  for (int k : tip_nodes)
+    f_full[k].y() = -P / double(tip_nodes.size());
+  // Ramp over about two periods, then average over about two more: the mean of what is
+  // left of the oscillation is within about 1 % of the static deflection.
+  const Vector p0 = body.probe_position();
+  const double period = 0.075, ramp = 2 * period, dt = 1e-4;
+  double time = 0, across = 0, back = 0;
+  int n = 0;
+  while (time < ramp + 2 * period)
+  {
+    const double scale = std::min(1.0, (time + 0.5 * dt) / ramp);
+    std::vector<Vector> f(f_full);
+    for (auto& fk : f)
+      fk *= scale;
+    body.set_skin_forces(f);
+    body.advance(dt);
+    time += dt;
+    if (time > ramp)
+    {
+      const Vector d = body.probe_position() - p0;
+      across -= d.y() / L;
+      back -= d.x() / L;
+      ++n;
+    }
+  }
+  across /= n;
+  back /= n;
+  INFO("tip / L: across " << across << " (elastica 0.4935), back " << back << " (elastica 0.1606)");
+  // Measured: 0.616 across, 25 % beyond the elastica, as at small loads (the test
+  // above; 0.623 with a three-period ramp and a four-period mean), and 0.252 back.
+  CHECK(across > 0.4935);
+  CHECK(across < 1.35 * 0.4935);
+  CHECK(back > 0.1606);
+  CHECK(back < 1.8 * 0.1606);
 }

@@ -236,18 +236,21 @@ TEST_CASE("A chain's composite skin moves with its links and splits its forces",
   for (int l : chain.links)
     links.push_back(&system.body(l));
   CompositeSkin<2> skin(links);
-  REQUIRE(skin.n_skin_nodes() == 8);
-  REQUIRE(skin.skin_faces().size() == 8);
-  CHECK(skin.skin_faces()[4][0] == 4); // second link's faces shifted by 4 nodes
+  // link 0: rounded at both hinges, 4 corners + 2 x 7 arc nodes; link 1: top only
+  const int n0 = int(links[0]->n_skin_nodes()), n = n0 + int(links[1]->n_skin_nodes());
+  REQUIRE(n0 == 18);
+  REQUIRE(skin.n_skin_nodes() == std::size_t(n));
+  REQUIRE(skin.skin_faces().size() == std::size_t(n));
+  CHECK(skin.skin_faces()[n0][0] == n0); // second link's faces shifted by n0 nodes
   std::vector<Eigen::Vector2d> x;
   skin.skin_positions(x);
-  CHECK(x[4].y() == Approx(-0.079)); // the second link's bottom-left corner
+  CHECK(x[n0].y() == Approx(-0.079)); // the second link's bottom-left corner
   // a uniform push on the skin turns the chain (fluid forces in, motion out)
-  skin.set_skin_forces(std::vector<Eigen::Vector2d>(8, Eigen::Vector2d(0.5, 0)));
+  skin.set_skin_forces(std::vector<Eigen::Vector2d>(n, Eigen::Vector2d(0.5 * 8 / n, 0)));
   for (int s = 0; s < 20; ++s)
     system.step(1e-3);
   std::vector<Eigen::Vector2d> v;
   skin.skin_velocities(v);
   CHECK(v[0].x() > 0);
-  CHECK(v[4].x() > v[0].x());
+  CHECK(v[n0].x() > v[0].x());
 }
