@@ -9,8 +9,8 @@
 // What it shows: at Table 1's resolution (six layers across 5 mm) the SPH strip is softer
 // than the continuum, by 16-21 % in stiffness, seen alike in the frequency (8 % low), in
 // the small static deflection (26 % high) and in the large one (25 % beyond the
-// elastica). Kernels truncated at the two free surfaces carry less bending stress than
-// the continuum. This is the seed's model, kept as specified (docs/coupling.md).
+// elastica), likely because kernels cut off at the two free surfaces carry less bending
+// stress. This is the seed's model, kept as specified (docs/coupling.md).
 
 #include "coupling/sph_solid_body.h"
 
