@@ -33,7 +33,7 @@ class DirectSolver
 {
 public:
   /// Factorises c_k K + c_m M now. Options prefix `chipflex_direct_`.
-  /// `node_block_size`: see use_mumps_cholesky.
+  /// `node_block_size`: see MumpsCholesky.
   DirectSolver(double c_k, const dealii::PETScWrappers::MPI::SparseMatrix& stiffness, double c_m,
                const dealii::PETScWrappers::MPI::SparseMatrix& mass, unsigned int node_block_size);
   ~DirectSolver();

@@ -18,7 +18,7 @@ struct EigenSolution
 };
 
 /// The `count` eigenpairs nearest `target` (relative residual tolerance 1e-8).
-/// `node_block_size`: see use_mumps_cholesky (fem/direct_solver.h).
+/// `node_block_size`: see MumpsCholesky (fem/direct_solver.h).
 EigenSolution solve_eigenproblem(const dealii::PETScWrappers::MPI::SparseMatrix& stiffness,
                                  const dealii::PETScWrappers::MPI::SparseMatrix& mass,
                                  unsigned int count, double target,

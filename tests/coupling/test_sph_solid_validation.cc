@@ -33,18 +33,58 @@ std::vector<double> downward_crossings(const std::vector<double>& t, const std::
       c.push_back(t[k - 1] + (t[k] - t[k - 1]) * (w[k - 1] - level) / (w[k - 1] - w[k]));
   return c;
 }
+
+/// The Table 1 strip as a horizontal cantilever without gravity.
+struct HorizontalStrip
+{
+  chipflex::sph::SolidMaterial material; // Table 1
+  chipflex::sph::SolidStripLayout layout = horizontal();
+  SphSolidBody body{material, layout, 1.3, Vector::Zero()};
+
+  /// E' I per metre in plane strain.
+  double bending_stiffness() const
+  {
+    const double t = layout.thickness, nu = material.poisson_ratio;
+    return material.youngs_modulus / (1 - nu * nu) * t * t * t / 12;
+  }
+
+  static chipflex::sph::SolidStripLayout horizontal()
+  {
+    chipflex::sph::SolidStripLayout l;
+    l.direction = Vector(1, 0);
+    return l;
+  }
+};
+
+/// Ramps the skin forces `full` in linearly over `ramp` seconds, holds them until `end`,
+/// and calls sample(time) after every step past the ramp.
+template <class Sample>
+void ramp_and_hold(SphSolidBody& body, const std::vector<Vector>& full, double ramp, double end,
+                   double dt, Sample sample)
+{
+  double time = 0;
+  while (time < end)
+  {
+    const double scale = std::min(1.0, (time + 0.5 * dt) / ramp);
+    std::vector<Vector> f(full);
+    for (auto& fk : f)
+      fk *= scale;
+    body.set_skin_forces(f);
+    body.advance(dt);
+    time += dt;
+    if (time > ramp)
+      sample(time);
+  }
+}
 } // namespace
 
 TEST_CASE("SPH solid gate: stiffness in frequency and statics against Euler-Bernoulli",
           "[coupling][validation]")
 {
-  chipflex::sph::SolidMaterial material; // Table 1
-  chipflex::sph::SolidStripLayout layout;
-  layout.direction = Vector(1, 0); // horizontal cantilever, no gravity
-  SphSolidBody body(material, layout, 1.3, Vector::Zero());
-  const double L = layout.length, t = layout.thickness, rho = material.density,
-               nu = material.poisson_ratio;
-  const double EI = material.youngs_modulus / (1 - nu * nu) * t * t * t / 12;
+  HorizontalStrip strip;
+  SphSolidBody& body = strip.body;
+  const double L = strip.layout.length, t = strip.layout.thickness, rho = strip.material.density;
+  const double EI = strip.bending_stiffness();
   const double f_beam = 1.8751 * 1.8751 / (2 * M_PI * L * L) * std::sqrt(EI / (rho * t));
   const double q = 6;                                  // N/m, downward on the upper face
   const double w_beam = q * std::pow(L, 4) / (8 * EI); // 0.20 mm: linear range
@@ -68,22 +108,12 @@ TEST_CASE("SPH solid gate: stiffness in frequency and statics against Euler-Bern
   // periods is the static deflection.
   const double y0 = body.probe_position().y(), ramp = 1.5 / f_beam, dt = 1e-4;
   std::vector<double> times, w;
-  double time = 0;
-  while (time < ramp + 3.6 / f_beam)
-  {
-    const double scale = std::min(1.0, (time + 0.5 * dt) / ramp);
-    std::vector<Vector> f(f_full);
-    for (auto& fk : f)
-      fk *= scale;
-    body.set_skin_forces(f);
-    body.advance(dt);
-    time += dt;
-    if (time > ramp)
-    {
-      times.push_back(time);
-      w.push_back(y0 - body.probe_position().y());
-    }
-  }
+  ramp_and_hold(body, f_full, ramp, ramp + 3.6 / f_beam, dt,
+                [&](double time)
+                {
+                  times.push_back(time);
+                  w.push_back(y0 - body.probe_position().y());
+                });
   const auto [lo, hi] = std::minmax_element(w.begin(), w.end());
   const std::vector<double> rough = downward_crossings(times, w, 0.5 * (*lo + *hi));
   REQUIRE(rough.size() >= 3);
@@ -118,13 +148,10 @@ TEST_CASE("SPH solid gate: large deflection under a tip load against the elastic
   // A dead tip load P = alpha EI / L^2 normal to the axis with alpha = 2 bends the strip
   // as far as the flow bends the gate (tip 39 mm across). Elastica (Mattiasson 1981,
   // Table 1): the tip moves 0.4935 L across and 0.1606 L back along the axis.
-  chipflex::sph::SolidMaterial material; // Table 1
-  chipflex::sph::SolidStripLayout layout;
-  layout.direction = Vector(1, 0); // horizontal cantilever, no gravity
-  SphSolidBody body(material, layout, 1.3, Vector::Zero());
-  const double L = layout.length, t = layout.thickness, nu = material.poisson_ratio;
-  const double EI = material.youngs_modulus / (1 - nu * nu) * t * t * t / 12;
-  const double alpha = 2, P = alpha * EI / (L * L);
+  HorizontalStrip strip;
+  SphSolidBody& body = strip.body;
+  const double L = strip.layout.length;
+  const double alpha = 2, P = alpha * strip.bending_stiffness() / (L * L);
   const auto& tip_nodes = body.skin_map().tip_nodes;
   std::vector<Vector> f_full(body.n_skin_nodes(), Vector::Zero());
   for (int k : tip_nodes)
@@ -133,25 +160,16 @@ TEST_CASE("SPH solid gate: large deflection under a tip load against the elastic
   // left of the oscillation is within about 1 % of the static deflection.
   const Vector p0 = body.probe_position();
   const double period = 0.075, ramp = 2 * period, dt = 1e-4;
-  double time = 0, across = 0, back = 0;
+  double across = 0, back = 0;
   int n = 0;
-  while (time < ramp + 2 * period)
-  {
-    const double scale = std::min(1.0, (time + 0.5 * dt) / ramp);
-    std::vector<Vector> f(f_full);
-    for (auto& fk : f)
-      fk *= scale;
-    body.set_skin_forces(f);
-    body.advance(dt);
-    time += dt;
-    if (time > ramp)
-    {
-      const Vector d = body.probe_position() - p0;
-      across -= d.y() / L;
-      back -= d.x() / L;
-      ++n;
-    }
-  }
+  ramp_and_hold(body, f_full, ramp, ramp + 2 * period, dt,
+                [&](double)
+                {
+                  const Vector d = body.probe_position() - p0;
+                  across -= d.y() / L;
+                  back -= d.x() / L;
+                  ++n;
+                });
   across /= n;
   back /= n;
   INFO("tip / L: across " << across << " (elastica 0.4935), back " << back << " (elastica 0.1606)");
