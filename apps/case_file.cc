@@ -40,6 +40,11 @@ void declare_keys(ParameterHandler& prm)
                     Selection("none|molteni colagrossi|fourtakas"),
                     "Delta-SPH term: none, molteni colagrossi (2009), fourtakas (2019).");
   prm.declare_entry("density diffusion delta", "0.1", Double(0), "delta, -.");
+  prm.declare_entry("spray tension", "cut", Selection("cut|keep"),
+                    "cut: spray (a fluid particle whose kernel support is less than half "
+                    "filled) holds no tension, p = max(p, 0), so detached particle pairs do "
+                    "not bind and fly apart; keep: the plain Tait law everywhere (as "
+                    "DualSPHysics).");
   prm.declare_entry("hydrostatic start", "true", Bool(),
                     "Start each fluid block with its hydrostatic density (no initial wave).");
   prm.leave_subsection();
@@ -67,9 +72,13 @@ void declare_keys(ParameterHandler& prm)
   prm.declare_entry("fluid blocks", "0, 0, 1, 2", Anything(),
                     "Fluid boxes 'min corner, max corner' (2*dim numbers, m), separated by ';'.");
   prm.declare_entry("domain min", "", Anything(),
-                    "Particles must stay in the domain box, m. Empty: automatic "
-                    "(everything plus a quarter of its size on every side).");
+                    "The domain box, m: a fluid particle that leaves it is removed from the "
+                    "run and counted (lost_particles in the log, probes and summary). Empty: "
+                    "automatic (everything plus a quarter of its size on every side).");
   prm.declare_entry("domain max", "", Anything(), "See domain min, m.");
+  prm.declare_entry("lost fraction limit", "0.01", Double(0, 1),
+                    "The run stops (its last checkpoint kept) once more than this fraction of "
+                    "the fluid particles has left the domain box or turned non-finite, -.");
   prm.enter_subsection("tank");
   prm.declare_entry("enabled", "true", Bool(), "A box tank around the fluid.");
   prm.declare_entry("min corner", "0, 0", Anything(), "Inner faces of the tank walls, m.");
@@ -197,6 +206,7 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c)
                         : diffusion == "fourtakas" ? sph::DensityDiffusionModel::fourtakas
                                                    : sph::DensityDiffusionModel::molteni_colagrossi;
   f.density_diffusion_delta = prm.get_double("density diffusion delta");
+  f.cut_spray_tension = prm.get("spray tension") == "cut";
   c.hydrostatic_start = prm.get_bool("hydrostatic start");
   prm.leave_subsection();
 
@@ -236,6 +246,7 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c)
     f.domain_min = vector_of<dim>("geometry/domain min", dmin);
     f.domain_max = vector_of<dim>("geometry/domain max", dmax);
   }
+  f.maximum_lost_fraction = prm.get_double("lost fraction limit");
   prm.enter_subsection("tank");
   c.tank.enabled = prm.get_bool("enabled");
   c.tank.min = vector_of<dim>("geometry/tank/min corner", prm.get("min corner"));

@@ -179,7 +179,9 @@ std::string CoupledSimulation::finish(const std::string& output_directory) const
     }
     line << " max_dx_mm=" << dx_max * 1e3 << " max_dy_mm=" << dy_max * 1e3;
     line << " dp_mm=" << fluid_.description().fluid.particle_spacing * 1e3
-         << " particles=" << cosim_->fluid().n_particles() << " steps=" << step_count()
+         << " particles=" << cosim_->fluid().n_particles()
+         << " lost_particles=" << n_lost_particles()
+         << " peak_fluid_speed_m_s=" << peak_fluid_speed() << " steps=" << step_count()
          << " wall_s=" << wall << (b + 1 < bodies_.size() ? "\n" : "");
   }
   const std::string text = line.str();

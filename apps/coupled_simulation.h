@@ -33,6 +33,13 @@ public:
   void save(Hdf5File& file) const override;
   void load(const Hdf5File& file) override;
   std::string summary() const override;
+  std::size_t n_lost_particles() const override { return fluid_.n_lost_particles(); }
+  std::string describe_lost_particle(std::size_t k) const override
+  {
+    return fluid_.describe_lost_particle(k);
+  }
+  double peak_fluid_speed() const override { return fluid_.peak_fluid_speed(); }
+  double peak_fluid_speed_time() const override { return fluid_.peak_fluid_speed_time(); }
 
   /// Writes the displacement CSVs and returns the summary line (RMS errors, wall time).
   std::string finish(const std::string& output_directory) const;

@@ -21,6 +21,7 @@ std::vector<std::string> FluidSimulation<dim>::probe_columns() const
     c.push_back("p_" + p.name + "_Pa");
   for (const auto& p : description_.height_probes)
     c.push_back("h_" + p.name + "_m");
+  c.push_back("lost_particles");
   return c;
 }
 
@@ -32,6 +33,7 @@ std::vector<double> FluidSimulation<dim>::probe_values() const
     v.push_back(sph::sample_pressure(*fluid_, p.position));
   for (const auto& p : description_.height_probes)
     v.push_back(sph::sample_water_height(*fluid_, p.position));
+  v.push_back(double(fluid_->lost_particles().size()));
   return v;
 }
 

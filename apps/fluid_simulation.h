@@ -29,6 +29,13 @@ public:
   void save(Hdf5File& file) const override;
   void load(const Hdf5File& file) override;
   std::string summary() const override;
+  std::size_t n_lost_particles() const override { return fluid_->lost_particles().size(); }
+  std::string describe_lost_particle(std::size_t k) const override
+  {
+    return fluid_->lost_particles().at(k).describe();
+  }
+  double peak_fluid_speed() const override { return fluid_->peak_fluid_speed(); }
+  double peak_fluid_speed_time() const override { return fluid_->peak_fluid_speed_time(); }
 
   sph::FluidSolver<dim>& fluid() { return *fluid_; }
   const sph::CaseDescription<dim>& description() const { return description_; }

@@ -151,11 +151,19 @@ int run_command(const Arguments& args)
   }
 
   ProgressMeter progress(sim->time(), end_time);
+  std::size_t lost_reported = sim->n_lost_particles();
+  const auto report_lost = [&]
+  {
+    for (; lost_reported < sim->n_lost_particles(); ++lost_reported)
+      std::cout << "removed: " << sim->describe_lost_particle(lost_reported) << " ("
+                << lost_reported + 1 << " lost so far)" << std::endl;
+  };
   try
   {
     while (sim->time() < end_time)
     {
       sim->advance();
+      report_lost();
       const double t = sim->time();
       if (t >= cadence.next_probe)
       {
@@ -182,6 +190,7 @@ int run_command(const Arguments& args)
   }
   catch (const SimulationError&)
   {
+    report_lost();
     probes.flush(); // the gauges up to the failure; the last checkpoint stays as it was
     throw;
   }
@@ -190,7 +199,10 @@ int run_command(const Arguments& args)
   if (const auto* coupled = dynamic_cast<const CoupledSimulation*>(sim.get()))
     std::cout << coupled->finish(dir) << std::endl;
   std::cout << "finished at t = " << sim->time() << " s after " << sim->step_count() << " steps; "
-            << particles.n_frames() << " frames in " << dir << "/particles.xdmf" << std::endl;
+            << particles.n_frames() << " frames in " << dir
+            << "/particles.xdmf; lost_particles=" << sim->n_lost_particles()
+            << " peak_fluid_speed_m_s=" << sim->peak_fluid_speed()
+            << " (t = " << sim->peak_fluid_speed_time() << " s)" << std::endl;
   return 0;
 }
 } // namespace chipflex::apps

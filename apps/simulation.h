@@ -32,6 +32,13 @@ public:
   /// Complete state into / from an open checkpoint file (each part in its own group).
   virtual void save(Hdf5File& file) const = 0;
   virtual void load(const Hdf5File& file) = 0;
+  /// Fluid particles removed so far (they left the domain box or turned non-finite).
+  virtual std::size_t n_lost_particles() const = 0;
+  /// One log line on the k-th removal (time, step, particle id, position, cause).
+  virtual std::string describe_lost_particle(std::size_t k) const = 0;
+  /// The largest fluid speed of the run so far, m/s.
+  virtual double peak_fluid_speed() const = 0;
+  virtual double peak_fluid_speed_time() const = 0;
   /// A few lines describing the set-up, printed at the start.
   virtual std::string summary() const = 0;
 };

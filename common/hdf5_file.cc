@@ -320,6 +320,12 @@ hid_t open_attribute(hid_t object, const std::string& name)
 }
 } // namespace
 
+bool Hdf5File::has_attribute(const std::string& object, const std::string& name) const
+{
+  Handle o(open_object(object));
+  return H5Aexists(o.id, name.c_str()) > 0;
+}
+
 double Hdf5File::read_double_attribute(const std::string& object, const std::string& name) const
 {
   Handle o(open_object(object));

@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <sstream>
+#include <unistd.h>
 
 namespace chipflex::sph
 {
@@ -93,6 +95,38 @@ void lattice(const Eigen::Matrix<double, dim, 1>& lo, const Eigen::Matrix<double
 }
 } // namespace
 
+/// Refuses, before anything is allocated, a spacing that would need more particles than
+/// the ids hold or more memory than the machine has (a typo such as dp = 1e-9 in a 1 m
+/// box would otherwise fill the memory for minutes and then fail).
+template <int dim>
+void check_particle_budget(const CaseDescription<dim>& c)
+{
+  const double dp = c.fluid.particle_spacing;
+  double n = 0;
+  for (const auto& b : c.fluid_blocks)
+  {
+    double cells = 1;
+    for (int d = 0; d < dim; ++d)
+      cells *= (b.max[d] - b.min[d]) / dp;
+    n += cells;
+  }
+  // State, previous state and force-pass arrays (sph/particle_arrays.h), the sort
+  // buffers and the set-up copies: about 200 bytes per particle in 3D.
+  const double bytes_per_particle = dim == 3 ? 200 : 150;
+  const double bytes = n * bytes_per_particle;
+  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
+  const double memory = pages > 0 && page_size > 0 ? double(pages) * double(page_size) : 0;
+  if (n > 4e9 || (memory > 0 && bytes > memory))
+  {
+    std::ostringstream s;
+    s.precision(3);
+    s << dp << " m gives " << n << " fluid particles, about " << bytes / 1e9
+      << " GB (this machine has " << memory / 1e9 << " GB"
+      << (n > 4e9 ? "; particle ids hold 4e9" : "") << "): use a coarser spacing";
+    throw InputError("fluid/particle spacing", s.str());
+  }
+}
+
 template <int dim>
 std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
 {
@@ -112,6 +146,7 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
       throw InputError("geometry/fluid blocks", "a block must be at least one spacing wide");
     height = std::max(height, b.max[up] - b.min[up]);
   }
+  check_particle_budget(c);
   if (p.speed_of_sound == 0)
   {
     const double g = p.gravity.norm();

@@ -110,6 +110,7 @@ void FluidSolver<dim>::finish_setup()
   auto& p = particles_;
   const std::size_t nb = staged_boundary_x_.size(), nf = staged_fluid_x_.size();
   p.n_boundary = nb;
+  n_fluid_created_ = nf;
   p.resize(nb + nf, is_symplectic(parameters_.scheme));
   for (std::size_t i = 0; i < nb + nf; ++i)
   {
@@ -234,8 +235,78 @@ void FluidSolver<dim>::check_time_step(double dt) const
     std::ostringstream s;
     s << "the time step collapsed to " << dt << " s (minimum " << parameters_.minimum_time_step
       << " s; largest acceleration " << acceleration_max_ << " m/s^2)";
-    fail(fastest_particle_, s.str());
+    fail(most_accelerated_particle(), s.str());
   }
+}
+
+template <int dim>
+std::string LostParticle<dim>::describe() const
+{
+  std::ostringstream s;
+  s.precision(6);
+  s << "t = " << time << " s (step " << step << "): fluid particle " << id << " at (";
+  for (int d = 0; d < dim; ++d)
+    s << (d ? ", " : "") << position[d];
+  s << ") "
+    << (cause == LossCause::left_domain ? "left the domain box"
+                                        : "has a non-finite position, velocity or density");
+  return s.str();
+}
+
+template <int dim>
+void FluidSolver<dim>::remove_lost_particles()
+{
+  auto& p = particles_;
+  const std::size_t nb = p.n_boundary;
+  std::vector<std::size_t> gone;
+  for (std::size_t i = 0; i < p.size(); ++i)
+  {
+    bool finite = std::isfinite(p.density[i]);
+    for (int d = 0; d < dim; ++d)
+      finite = finite && std::isfinite(p.velocity[d][i]) && std::isfinite(p.position[d][i]);
+    const bool outside = p.cell[i] == NeighbourGrid<dim>::outside;
+    if (finite && !outside)
+      continue;
+    if (i < nb) // a wall particle: the walls' motion is wrong, not one splash
+      fail(i, finite ? "left the domain box" : "has a non-finite state (the run blew up)");
+    LostParticle<dim> lost;
+    lost.step = step_;
+    lost.time = time_;
+    lost.id = p.id[i];
+    for (int d = 0; d < dim; ++d)
+      lost.position[d] = p.position[d][i];
+    lost.cause = finite ? LossCause::left_domain : LossCause::non_finite;
+    lost_.push_back(lost);
+    gone.push_back(i);
+  }
+  p.remove(gone);
+  const double fraction = double(lost_.size()) / double(std::max<std::size_t>(1, n_fluid_created_));
+  if (fraction > parameters_.maximum_lost_fraction)
+  {
+    std::ostringstream s;
+    s.precision(4);
+    s << lost_.size() << " of " << n_fluid_created_ << " fluid particles lost (" << 100 * fraction
+      << " %, more than the limit of " << 100 * parameters_.maximum_lost_fraction
+      << " %); the last: " << lost_.back().describe();
+    throw SimulationError(s.str());
+  }
+}
+
+template <int dim>
+std::size_t FluidSolver<dim>::most_accelerated_particle() const
+{
+  const auto& p = particles_;
+  std::size_t best = p.n_boundary;
+  double best_a2 = -1;
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+  {
+    double a2 = 0;
+    for (int d = 0; d < dim; ++d)
+      a2 += double(p.acceleration[d][i]) * double(p.acceleration[d][i]);
+    if (a2 > best_a2)
+      best = i, best_a2 = a2;
+  }
+  return best;
 }
 
 template <int dim>
@@ -364,6 +435,8 @@ std::size_t FluidSolver<dim>::memory_bytes() const
   return particles_.memory_bytes() + impl_->memory_bytes();
 }
 
+template struct LostParticle<2>;
+template struct LostParticle<3>;
 template class FluidSolver<2>;
 template class FluidSolver<3>;
 } // namespace chipflex::sph

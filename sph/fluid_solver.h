@@ -33,8 +33,14 @@
 // sequential counting sort; reductions are maxima. Results are bitwise independent of
 // the thread count, and a checkpoint restores a run bitwise.
 //
-// Failure: a non-finite state, a particle leaving the domain box or dt below
-// minimum_time_step throws SimulationError naming the step, time and particle.
+// Lost particles: a fluid particle that leaves the domain box or whose state turns
+// non-finite is removed at the next sort (the others keep their order, so a run with
+// removals stays deterministic and restarts bitwise) and recorded in lost_particles().
+// One splash must not end a long run; many lost particles mean the case is wrong.
+//
+// Failure: more than maximum_lost_fraction of the fluid lost, a boundary particle
+// leaving the domain box, a non-finite acceleration or dt below minimum_time_step
+// throws SimulationError naming the step, time and particle.
 
 #include "sph/fluid_parameters.h"
 #include "sph/particle_arrays.h"
@@ -57,6 +63,27 @@ enum class ParticleKind
 {
   boundary = 0,
   fluid = 1
+};
+
+/// Why a fluid particle was taken out of the run.
+enum class LossCause
+{
+  left_domain, ///< outside the domain box
+  non_finite   ///< NaN or infinite position, velocity or density
+};
+
+/// One removed fluid particle: when, which, where (its last position), why.
+template <int dim>
+struct LostParticle
+{
+  std::int64_t step = 0;
+  double time = 0;
+  std::uint32_t id = 0;
+  Eigen::Matrix<double, dim, 1> position;
+  LossCause cause = LossCause::left_domain;
+
+  /// "t = 0.245 s (step 1234): fluid particle 99 at (0.636, 0.384) left the domain box"
+  std::string describe() const;
 };
 
 enum class HookPoint
@@ -126,6 +153,13 @@ public:
   Vector position(std::size_t i) const;
   Vector velocity(std::size_t i) const;
   double pressure(std::size_t i) const;
+  /// Fluid particles removed so far, in the order of removal.
+  const std::vector<LostParticle<dim>>& lost_particles() const { return lost_; }
+  /// Fluid particles the run started with (removed ones included).
+  std::size_t n_fluid_created() const { return n_fluid_created_; }
+  /// Largest fluid speed seen at any force pass of the run so far, m/s, and when.
+  double peak_fluid_speed() const { return peak_speed_; }
+  double peak_fluid_speed_time() const { return peak_speed_time_; }
   /// Every particle (fluid and boundary) has the mass rho0 dp^dim (2D: per metre).
   double particle_mass() const { return mass_; }
   double speed_of_sound() const { return parameters_.speed_of_sound; }
@@ -147,6 +181,9 @@ private:
   void predict_symplectic(double dt);
   void correct_symplectic(double dt);
   void check_time_step(double dt) const;
+  void remove_lost_particles();
+  /// The fluid particle with the largest acceleration of the last force pass.
+  std::size_t most_accelerated_particle() const;
   void run_hooks(HookPoint point);
   [[noreturn]] void fail(std::size_t i, const std::string& problem) const;
 
@@ -164,7 +201,9 @@ private:
   bool set_up_ = false, boundary_moved_ = true, walls_moved_ = true;
   float dot_rr2_max_ = 0;
   double acceleration_max_ = 0;
-  std::size_t fastest_particle_ = 0;
+  std::vector<LostParticle<dim>> lost_;
+  std::size_t n_fluid_created_ = 0;
+  double peak_speed_ = 0, peak_speed_time_ = 0;
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

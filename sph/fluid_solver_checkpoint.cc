@@ -62,6 +62,32 @@ void FluidSolver<dim>::save(Hdf5File& file, const std::string& group) const
   file.write(group + "/density", widen(p.density), {n});
   file.write(group + "/density_previous", widen(p.density_previous), {n});
   file.write(group + "/id", std::vector<std::int64_t>(p.id.begin(), p.id.end()), {n});
+  file.write(group + "/fill", widen(p.fill), {n});
+  // The removed particles: their count decides when the run stops, their log the summary.
+  file.write_attribute(group, "n_fluid_created", std::int64_t(n_fluid_created_));
+  file.write_attribute(group, "peak_fluid_speed", peak_speed_);
+  file.write_attribute(group, "peak_fluid_speed_time", peak_speed_time_);
+  const std::size_t nl = lost_.size();
+  file.write_attribute(group, "n_lost", std::int64_t(nl));
+  if (nl > 0)
+  {
+    std::vector<std::int64_t> lost_id(nl), lost_step(nl), lost_cause(nl);
+    std::vector<double> lost_time(nl), lost_x(nl * dim);
+    for (std::size_t k = 0; k < nl; ++k)
+    {
+      lost_id[k] = lost_[k].id;
+      lost_step[k] = lost_[k].step;
+      lost_cause[k] = std::int64_t(lost_[k].cause);
+      lost_time[k] = lost_[k].time;
+      for (int d = 0; d < dim; ++d)
+        lost_x[k * dim + d] = lost_[k].position[d];
+    }
+    file.write(group + "/lost/id", lost_id, {nl});
+    file.write(group + "/lost/step", lost_step, {nl});
+    file.write(group + "/lost/cause", lost_cause, {nl});
+    file.write(group + "/lost/time", lost_time, {nl});
+    file.write(group + "/lost/position", lost_x, {nl, std::size_t(dim)});
+  }
   if (parameters_.scheme == TimeScheme::position_verlet && forces_current_)
   {
     // The next step's predictor and dt come from the last pass: a restart must not
@@ -70,7 +96,6 @@ void FluidSolver<dim>::save(Hdf5File& file, const std::string& group) const
     file.write(group + "/density_rate", widen(p.density_rate), {n});
     file.write_attribute(group, "acceleration_max", acceleration_max_);
     file.write_attribute(group, "dot_rr2_max", double(dot_rr2_max_));
-    file.write_attribute(group, "fastest_particle", std::int64_t(fastest_particle_));
   }
   for (std::size_t w = 0; w < walls_.size(); ++w)
   {
@@ -93,15 +118,17 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
 {
   finish_setup();
   auto& p = particles_;
-  const std::size_t n = p.size();
   const std::string where = file.path() + ":" + group;
   if (file.read_integer_attribute(group, "dim") != dim)
     throw InputError(where, "checkpoint of a different dimension");
-  if (std::size_t(file.read_integer_attribute(group, "n_particles")) != n ||
+  // Removed fluid particles make the saved count smaller than the case's, never larger.
+  const std::size_t n = std::size_t(file.read_integer_attribute(group, "n_particles"));
+  if (n > n_fluid_created_ + p.n_boundary ||
       std::size_t(file.read_integer_attribute(group, "n_boundary")) != p.n_boundary)
     throw InputError(where, "checkpoint has a different particle count than the case (" +
-                                std::to_string(n) + " particles, " + std::to_string(p.n_boundary) +
-                                " boundary)");
+                                std::to_string(n_fluid_created_ + p.n_boundary) + " particles, " +
+                                std::to_string(p.n_boundary) + " boundary)");
+  p.resize(n, is_symplectic(parameters_.scheme));
   if (file.exists(group + "/position_previous") != !p.position_previous[0].empty())
     throw InputError(where, "checkpoint was written with another time scheme");
   time_ = file.read_double_attribute(group, "time");
@@ -116,14 +143,53 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
   const auto rho = file.read_doubles(group + "/density");
   const auto rho_prev = file.read_doubles(group + "/density_previous");
   const auto id = file.read_integers(group + "/id");
-  if (rho.size() != n || rho_prev.size() != n || id.size() != n)
+  // Older checkpoints have no kernel-support filling: treat every particle as fluid.
+  const auto fill = file.exists(group + "/fill") ? file.read_doubles(group + "/fill")
+                                                 : std::vector<double>(n, 1.0);
+  if (rho.size() != n || rho_prev.size() != n || id.size() != n || fill.size() != n)
     throw InputError(where, "wrong array size in checkpoint");
   for (std::size_t i = 0; i < n; ++i)
   {
     p.density[i] = float(rho[i]);
     p.density_previous[i] = float(rho_prev[i]);
     p.id[i] = std::uint32_t(id[i]);
+    p.fill[i] = float(fill[i]);
   }
+  lost_.clear();
+  peak_speed_ = peak_speed_time_ = 0;
+  if (file.has_attribute(group, "n_lost"))
+  {
+    if (std::size_t(file.read_integer_attribute(group, "n_fluid_created")) != n_fluid_created_)
+      throw InputError(where, "checkpoint was written for another fluid set-up");
+    peak_speed_ = file.read_double_attribute(group, "peak_fluid_speed");
+    peak_speed_time_ = file.read_double_attribute(group, "peak_fluid_speed_time");
+    const std::size_t nl = std::size_t(file.read_integer_attribute(group, "n_lost"));
+    if (n + nl != n_fluid_created_ + p.n_boundary)
+      throw InputError(where, "particle and lost-particle counts do not add up");
+    if (nl > 0)
+    {
+      const auto lost_id = file.read_integers(group + "/lost/id");
+      const auto lost_step = file.read_integers(group + "/lost/step");
+      const auto lost_cause = file.read_integers(group + "/lost/cause");
+      const auto lost_time = file.read_doubles(group + "/lost/time");
+      const auto lost_x = file.read_doubles(group + "/lost/position");
+      if (lost_id.size() != nl || lost_step.size() != nl || lost_cause.size() != nl ||
+          lost_time.size() != nl || lost_x.size() != nl * dim)
+        throw InputError(where, "wrong size of the lost-particle log");
+      lost_.resize(nl);
+      for (std::size_t k = 0; k < nl; ++k)
+      {
+        lost_[k].id = std::uint32_t(lost_id[k]);
+        lost_[k].step = lost_step[k];
+        lost_[k].cause = lost_cause[k] == 0 ? LossCause::left_domain : LossCause::non_finite;
+        lost_[k].time = lost_time[k];
+        for (int d = 0; d < dim; ++d)
+          lost_[k].position[d] = lost_x[k * dim + d];
+      }
+    }
+  }
+  else if (n != n_fluid_created_ + p.n_boundary)
+    throw InputError(where, "checkpoint has a different particle count than the case");
   forces_current_ = false;
   if (parameters_.scheme == TimeScheme::position_verlet && file.exists(group + "/acceleration"))
   {
@@ -135,7 +201,6 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
       p.density_rate[i] = float(rate[i]);
     acceleration_max_ = file.read_double_attribute(group, "acceleration_max");
     dot_rr2_max_ = float(file.read_double_attribute(group, "dot_rr2_max"));
-    fastest_particle_ = std::size_t(file.read_integer_attribute(group, "fastest_particle"));
     forces_current_ = true;
   }
   for (std::size_t w = 0; w < walls_.size(); ++w)

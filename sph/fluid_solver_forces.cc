@@ -41,6 +41,14 @@ void FluidSolver<dim>::Impl::setup(const FluidParameters<dim>& p)
   grid.setup(p.domain_min, p.domain_max, 2 * h);
   eos = TaitEquationOfState(p.reference_density, c0, p.gamma);
   kernel_factor = float(WendlandKernel<dim>(h).gradient_factor);
+  // Lattice points strictly inside the support 2h of a lattice point (itself included).
+  const int reach = int(std::ceil(2 * h / p.particle_spacing));
+  long full = 0;
+  for (int a = -reach; a <= reach; ++a)
+    for (int b = -reach; b <= reach; ++b)
+      for (int c = dim == 3 ? -reach : 0; c <= (dim == 3 ? reach : 0); ++c)
+        full += (a * a + b * b + c * c) * p.particle_spacing * p.particle_spacing < 4 * h * h;
+  fill_factor = float(1.0 / double(full));
   const float eta2 = float(0.01 * h * h);
   policies.artificial = {float(-2 * p.artificial_viscosity * c0 * h), eta2};
   policies.laminar = {float(4 * p.kinematic_viscosity), eta2};
@@ -62,45 +70,29 @@ void FluidSolver<dim>::sort_and_bin()
   auto& g = impl_->grid;
   const std::size_t nb = p.n_boundary, n = p.size();
   const std::size_t first = boundary_moved_ ? 0 : nb;
-  std::size_t bad = n;
-#pragma omp parallel for schedule(static) reduction(min : bad) if (n > light_parallel_threshold)
+  std::size_t n_bad = 0;
+#pragma omp parallel for schedule(static) reduction(+ : n_bad) if (n > light_parallel_threshold)
   for (std::size_t i = first; i < n; ++i)
   {
     double x[dim];
     for (int d = 0; d < dim; ++d)
       x[d] = p.position[d][i];
-    const std::uint32_t c = g.cell_of(x);
+    const std::uint32_t c = g.cell_of(x); // outside also for a NaN position
     p.cell[i] = c;
     bool finite = std::isfinite(p.density[i]);
     for (int d = 0; d < dim; ++d)
       finite = finite && std::isfinite(p.velocity[d][i]);
-    if (c == NeighbourGrid<dim>::outside || !finite)
-      bad = std::min(bad, i);
+    n_bad += c == NeighbourGrid<dim>::outside || !finite;
   }
-  if (bad < n)
-  {
-    bool finite = std::isfinite(p.density[bad]);
-    for (int d = 0; d < dim; ++d)
-      finite = finite && std::isfinite(p.velocity[d][bad]) && std::isfinite(p.position[d][bad]);
-    if (!finite)
-      fail(bad, "has a non-finite position, velocity or density (the run blew up)");
-    std::ostringstream s;
-    s << "left the domain box [";
-    for (int d = 0; d < dim; ++d)
-      s << (d ? ", " : "") << parameters_.domain_min[d];
-    s << "] - [";
-    for (int d = 0; d < dim; ++d)
-      s << (d ? ", " : "") << parameters_.domain_max[d];
-    s << "]";
-    fail(bad, s.str());
-  }
+  if (n_bad > 0)
+    remove_lost_particles();
   if (boundary_moved_)
   {
     g.sort(p.cell, 0, nb, impl_->permutation, impl_->boundary_start);
     p.permute(0, impl_->permutation, impl_->scratch);
     boundary_moved_ = false;
   }
-  g.sort(p.cell, nb, n, impl_->permutation, impl_->fluid_start);
+  g.sort(p.cell, nb, p.size(), impl_->permutation, impl_->fluid_start);
   p.permute(nb, impl_->permutation, impl_->scratch);
   if (walls_moved_)
   {
@@ -121,11 +113,17 @@ void FluidSolver<dim>::force_pass()
   auto& im = *impl_;
   const std::size_t nb = p.n_boundary, n = p.size();
   const float mass = float(mass_);
+  // Spray holds no tension: without the cut, a detached pair of particles below rho0
+  // attracts, binds, orbits with its density drifting and flies apart at several times
+  // c0 (docs/sph.md). The fluid itself keeps its tension: it holds stretched water together.
+  const float spray_fill = parameters_.cut_spray_tension ? float(spray_fill_threshold) : 0.0f;
 #pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
     const float rho = p.density[i];
-    p.pressure_term[i] = im.eos.pressure(rho) / (rho * rho);
+    const float pressure = im.eos.pressure(rho);
+    const float floor = i >= nb && p.fill[i] < spray_fill ? 0.0f : -INFINITY;
+    p.pressure_term[i] = std::max(pressure, floor) / (rho * rho);
     p.volume[i] = mass / rho;
   }
   ForcePassInput<dim> in;
@@ -146,6 +144,8 @@ void FluidSolver<dim>::force_pass()
   in.kernel_factor = im.kernel_factor;
   in.mass_fluid = in.mass_boundary = mass;
   in.density_rate = p.density_rate.data();
+  in.fill = p.fill.data();
+  in.fill_factor = im.fill_factor;
   dot_rr2_max_ = im.pass(in, im.policies, nb, n);
 
   for (auto& forces : vertex_forces_)
@@ -166,25 +166,33 @@ void FluidSolver<dim>::force_pass()
   }
   im.lennard_jones.apply(p, nb, n, mass_, vertex_forces_);
 
-  // Gravity, and the largest acceleration for the time step.
+  // Gravity, the largest acceleration for the time step, the fastest particle.
   float g[dim];
   for (int d = 0; d < dim; ++d)
     g[d] = float(parameters_.gravity[d]);
-  float a2_max = 0;
-#pragma omp parallel for schedule(static) reduction(max : a2_max) if (n > light_parallel_threshold)
+  float a2_max = 0, v2_max = 0;
+#pragma omp parallel for schedule(static)                                                          \
+    reduction(max                                                                                  \
+              : a2_max, v2_max) if (n > light_parallel_threshold)
   for (std::size_t i = nb; i < n; ++i)
   {
-    float a2 = 0;
+    float a2 = 0, v2 = 0;
     for (int d = 0; d < dim; ++d)
     {
       const float a = p.acceleration[d][i] + g[d];
       p.acceleration[d][i] = a;
       a2 += a * a;
+      v2 += p.velocity[d][i] * p.velocity[d][i];
     }
     a2_max = std::max(a2_max, a2);
+    v2_max = std::max(v2_max, v2);
   }
   acceleration_max_ = std::sqrt(double(a2_max));
-  fastest_particle_ = nb;
+  if (std::sqrt(double(v2_max)) > peak_speed_)
+  {
+    peak_speed_ = std::sqrt(double(v2_max));
+    peak_speed_time_ = time_;
+  }
   if (!(acceleration_max_ < 1e300)) // NaN or infinite: name the first culprit
     for (std::size_t i = nb; i < n; ++i)
       for (int d = 0; d < dim; ++d)

@@ -54,6 +54,7 @@ struct FluidSolver<dim>::Impl
   PairPolicies policies;
   PassFunction pass = nullptr;
   float kernel_factor = 0;
+  float fill_factor = 0;
 
   void setup(const FluidParameters<dim>& p);
   std::size_t memory_bytes() const

@@ -11,6 +11,10 @@
 // A boundary (dummy) particle gathers the same sums over fluid neighbours: its density
 // rate (dynamic boundary condition, Crespo et al. 2007) and, as its "acceleration", the
 // reaction of the fluid on it per unit of its mass (exactly opposite pair by pair).
+// Every particle also counts the particles in its kernel support (itself included),
+// relative to a full lattice support: the filling, 1 inside the fluid or at a wall, 0.6
+// on a flat free surface, 2/21 for a pair however close (2D, h = sqrt(2) dp). It tells
+// spray from fluid (FluidSolver cuts the tension of spray).
 
 #include "sph/density_diffusion.h"
 #include "sph/neighbour_grid.h"
@@ -35,9 +39,11 @@ struct ForcePassInput
   const std::uint32_t* boundary_start;
   const std::int64_t* rows;
   float inverse_h, kernel_factor;
+  float fill_factor; ///< 1 / (particles in a full lattice support)
   float mass_fluid, mass_boundary;
   float* a[dim];
   float* density_rate;
+  float* fill;
 };
 
 namespace detail
@@ -45,7 +51,7 @@ namespace detail
 template <int dim, bool neighbour_is_fluid, class Viscosity, class Diffusion>
 inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
                    std::uint32_t jb, std::uint32_t je, const double (&xi)[3], const float (&vi)[3],
-                   float rhoi, float pti, float mj, float (&acc)[4], float& dot_rr2_max)
+                   float rhoi, float pti, float mj, float (&acc)[5], float& dot_rr2_max)
 {
   const double* const x0 = in.x[0];
   const double* const x1 = in.x[1];
@@ -59,9 +65,9 @@ inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const D
   const float inv_h = in.inverse_h, kf = in.kernel_factor;
   const double xi0 = xi[0], xi1 = xi[1], xi2 = xi[2];
   const float vi0 = vi[0], vi1 = vi[1], vi2 = vi[2];
-  float a0 = 0, a1 = 0, a2 = 0, ar = 0, vmax = dot_rr2_max;
+  float a0 = 0, a1 = 0, a2 = 0, ar = 0, aw = 0, vmax = dot_rr2_max;
   const std::ptrdiff_t end = je;
-#pragma omp simd reduction(+ : a0, a1, a2, ar) reduction(max : vmax)
+#pragma omp simd reduction(+ : a0, a1, a2, ar, aw) reduction(max : vmax)
   for (std::ptrdiff_t j = jb; j < end; ++j)
   {
     const float dx0 = float(xi0 - x0[j]);
@@ -69,7 +75,9 @@ inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const D
     const float dx2 = dim == 3 ? float(xi2 - x2[j]) : 0.0f;
     const float r2 = dx0 * dx0 + dx1 * dx1 + dx2 * dx2;
     const float t = std::max(0.0f, 1.0f - 0.5f * inv_h * std::sqrt(r2));
-    const float fac = kf * t * t * t;
+    const float t3 = t * t * t;
+    const float fac = kf * t3;
+    aw += t > 0.0f ? 1.0f : 0.0f; // a select, not a branch
     const float dv0 = vi0 - v0[j];
     const float dv1 = vi1 - v1[j];
     const float dv2 = dim == 3 ? vi2 - v2[j] : 0.0f;
@@ -115,6 +123,7 @@ inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const D
   acc[1] += a1;
   acc[2] += a2;
   acc[3] += ar;
+  acc[4] += aw;
   dot_rr2_max = vmax;
 }
 
@@ -131,7 +140,7 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
     double xi[3] = {in.x[0][i], in.x[1][i], dim == 3 ? in.x[dim - 1][i] : 0.0};
     float vi[3] = {in.v[0][i], in.v[1][i], dim == 3 ? in.v[dim - 1][i] : 0.0f};
     const float rhoi = in.rho[i], pti = in.pressure_term[i];
-    float acc[4] = {0, 0, 0, 0};
+    float acc[5] = {0, 0, 0, 0, 0};
     float vmax = 0;
     const std::int64_t c = in.cell[i];
     for (int r = 0; r < NeighbourGrid<dim>::n_rows; ++r)
@@ -146,6 +155,7 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
     for (int d = 0; d < dim; ++d)
       in.a[d][i] = acc[d];
     in.density_rate[i] = acc[3];
+    in.fill[i] = in.fill_factor * acc[4];
     dot_rr2_max = std::max(dot_rr2_max, vmax);
   };
   // Boundary results are not read by the fluid loop: no barrier between the two.

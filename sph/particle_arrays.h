@@ -39,6 +39,9 @@ struct ParticleArrays
   /// Stable particle number: boundary particles 0..n_boundary-1 (index of their wall
   /// attachment), fluid particles 0..n_fluid-1 (order of creation).
   std::vector<std::uint32_t> id;
+  /// Filling of the kernel support at the last force pass (sph/force_loop.h); the next
+  /// pass cuts the tension of particles below FluidSolver's spray threshold.
+  std::vector<float> fill;
 
   // Results of the last force pass (not permuted: recomputed after every sort).
   std::array<std::vector<float>, dim> acceleration; ///< boundary: reaction force / mass
@@ -64,6 +67,7 @@ struct ParticleArrays
     density.resize(n);
     density_previous.resize(n);
     id.resize(n);
+    fill.resize(n, 1.0f);
     density_rate.resize(n);
     pressure_term.resize(n);
     volume.resize(n);
@@ -87,7 +91,32 @@ struct ParticleArrays
     apply(density, first, permutation, scratch);
     apply(density_previous, first, permutation, scratch);
     apply(id, first, permutation, scratch);
+    apply(fill, first, permutation, scratch);
     apply(cell, first, permutation, scratch);
+  }
+
+  /// Removes the particles at `sorted_indices` (ascending, all >= n_boundary) from every
+  /// array, keeping the order of the others: a removal is as deterministic as the run.
+  void remove(const std::vector<std::size_t>& sorted_indices)
+  {
+    if (sorted_indices.empty())
+      return;
+    for (int d = 0; d < dim; ++d)
+    {
+      erase(position[d], sorted_indices);
+      erase(velocity[d], sorted_indices);
+      erase(velocity_previous[d], sorted_indices);
+      erase(position_previous[d], sorted_indices);
+      erase(acceleration[d], sorted_indices);
+    }
+    erase(density, sorted_indices);
+    erase(density_previous, sorted_indices);
+    erase(id, sorted_indices);
+    erase(fill, sorted_indices);
+    erase(density_rate, sorted_indices);
+    erase(pressure_term, sorted_indices);
+    erase(volume, sorted_indices);
+    erase(cell, sorted_indices);
   }
 
   std::size_t memory_bytes() const
@@ -96,11 +125,28 @@ struct ParticleArrays
     for (int d = 0; d < dim; ++d)
       b += bytes(position[d]) + bytes(velocity[d]) + bytes(velocity_previous[d]) +
            bytes(position_previous[d]) + bytes(acceleration[d]);
-    return b + bytes(density) + bytes(density_previous) + bytes(id) + bytes(density_rate) +
-           bytes(pressure_term) + bytes(volume) + bytes(cell);
+    return b + bytes(density) + bytes(density_previous) + bytes(id) + bytes(fill) +
+           bytes(density_rate) + bytes(pressure_term) + bytes(volume) + bytes(cell);
   }
 
 private:
+  template <typename T>
+  static void erase(std::vector<T>& a, const std::vector<std::size_t>& sorted_indices)
+  {
+    if (a.empty()) // position_previous outside the symplectic schemes
+      return;
+    std::size_t out = sorted_indices.front(), next = 0;
+    for (std::size_t i = out; i < a.size(); ++i)
+    {
+      if (next < sorted_indices.size() && sorted_indices[next] == i)
+      {
+        ++next;
+        continue;
+      }
+      a[out++] = a[i];
+    }
+    a.resize(out);
+  }
   template <typename T>
   static std::size_t bytes(const std::vector<T>& v)
   {
