@@ -42,8 +42,8 @@ std::unique_ptr<Simulation> make_simulation(const CaseFile& c, const std::string
                                                dir);
   }
   if (c.dimension == 2)
-    return std::make_unique<FluidSimulation<2>>(c.case_2d);
-  return std::make_unique<FluidSimulation<3>>(c.case_3d);
+    return std::make_unique<FluidSimulation<2>>(c.case_2d, dir);
+  return std::make_unique<FluidSimulation<3>>(c.case_3d, dir);
 }
 
 struct Cadence
