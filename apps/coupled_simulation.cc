@@ -1,11 +1,9 @@
 #include "apps/coupled_simulation.h"
 
-#include "common/atomic_output.h"
 #include "common/hdf5_file.h"
 #include "common/input_error.h"
 #include "coupling/body_factory.h"
 
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -196,13 +194,6 @@ std::string CoupledSimulation::finish(const std::string& output_directory) const
          << " particles=" << cosim_->fluid().n_particles() << " steps=" << step_count()
          << " wall_s=" << wall << (b + 1 < bodies_.size() ? "\n" : "");
   }
-  const std::string text = line.str();
-  AtomicOutput out(output_directory + "/summary.txt");
-  {
-    std::ofstream f(out.temporary_path());
-    f << text << "\n";
-  }
-  out.commit();
-  return text;
+  return line.str();
 }
 } // namespace chipflex::apps

@@ -35,8 +35,8 @@ public:
   void load(const Hdf5File& file) override;
   std::string summary() const override;
 
-  /// Writes the displacement CSVs and returns the summary line (RMS errors, wall time).
-  std::string finish(const std::string& output_directory) const;
+  /// Writes the displacement CSVs; returns one summary line per body (RMS errors, wall time).
+  std::string finish(const std::string& output_directory) const override;
 
 private:
   void record();
