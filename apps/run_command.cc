@@ -119,8 +119,9 @@ double next_after(double time, double interval)
 int run_command(const Arguments& args)
 {
   CommandLine cl("chipflex run CASE.prm --out DIR [options]",
-                 "Run an SPH case: particle frames (DIR/particles.xdmf), gauges "
-                 "(DIR/probes.csv), checkpoints (DIR/checkpoint.h5).");
+                 "Run an SPH case: particle frames (DIR/particles.xdmf), walls "
+                 "(DIR/walls.xdmf), body skins (DIR/skins.xdmf), gauges (DIR/probes.csv), "
+                 "DIR/summary.txt, checkpoints (DIR/checkpoint.h5); docs/output.md.");
   cl.add_positional("CASE.prm", "case file (deal.II ParameterHandler format)", false);
   cl.add_option("--out", "DIR", "output folder (created)");
   cl.add_option("--threads", "N", "OpenMP threads (default: OMP_NUM_THREADS or all cores)");
