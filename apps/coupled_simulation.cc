@@ -1,11 +1,9 @@
 #include "apps/coupled_simulation.h"
 
-#include "common/atomic_output.h"
 #include "common/hdf5_file.h"
 #include "common/input_error.h"
 #include "coupling/body_factory.h"
 
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -20,7 +18,7 @@ constexpr double sample_interval = 1e-4; // s
 
 CoupledSimulation::CoupledSimulation(const sph::CaseDescription<2>& fluid_case,
                                      const BodyCase& bodies, const std::string& output_directory)
-    : fluid_(fluid_case), case_(bodies), skins_(output_directory),
+    : fluid_(fluid_case, output_directory), case_(bodies), skins_(output_directory, "skins"),
       started_(std::chrono::steady_clock::now())
 {
   // Coupled momentum exchange is exact only with the symplectic fluid schemes (the
@@ -34,7 +32,10 @@ CoupledSimulation::CoupledSimulation(const sph::CaseDescription<2>& fluid_case,
   {
     bodies_.push_back(coupling::make_coupled_body(d, fluid_.description().fluid.gravity));
     cosim_->add_body(*bodies_.back(), d.name, d.wall_model, d.lennard_jones, d.expected_pressure);
+    fluid_.exclude_from_wall_output(cosim_->fluid_wall_id(cosim_->n_bodies() - 1));
     probe_start_.push_back(bodies_.back()->probe_position());
+    reference_skins_.emplace_back();
+    bodies_.back()->skin().skin_positions(reference_skins_.back());
     histories_.emplace_back();
   }
   record();
@@ -61,12 +62,23 @@ void CoupledSimulation::advance()
 
 ParticleFrame CoupledSimulation::frame() const
 {
-  std::vector<coupling::SkinOutput<2>::Skin> skins;
+  std::vector<SurfaceOutput<2>::Surface> skins;
   for (int b = 0; b < cosim_->n_bodies(); ++b)
   {
     const auto& wall = cosim_->skin_wall(b);
-    skins.push_back({wall.surface().name, {}, wall.delivered(), wall.surface().faces});
-    cosim_->body(b).skin().skin_positions(skins.back().vertices);
+    const auto& skin = cosim_->body(b).skin();
+    std::vector<Eigen::Vector2d> x, v;
+    skin.skin_positions(x);
+    skin.skin_velocities(v);
+    std::vector<Eigen::Vector2d> u(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i)
+      u[i] = x[i] - reference_skins_[b][i];
+    skins.push_back({wall.surface().name,
+                     x,
+                     wall.surface().faces,
+                     {{"displacement", "m", u},
+                      {"velocity", "m/s", v},
+                      {"fluid_force", "N/m", wall.delivered()}}});
   }
   skins_.write(time(), skins);
   return fluid_.frame();
@@ -184,13 +196,6 @@ std::string CoupledSimulation::finish(const std::string& output_directory) const
          << " peak_fluid_speed_m_s=" << peak_fluid_speed() << " steps=" << step_count()
          << " wall_s=" << wall << (b + 1 < bodies_.size() ? "\n" : "");
   }
-  const std::string text = line.str();
-  AtomicOutput out(output_directory + "/summary.txt");
-  {
-    std::ofstream f(out.temporary_path());
-    f << text << "\n";
-  }
-  out.commit();
-  return text;
+  return line.str();
 }
 } // namespace chipflex::apps

@@ -2,15 +2,16 @@
 // The SPH fluid plus coupled bodies as a `chipflex run` Simulation (2D). The fluid is
 // the FluidSimulation of the same case; coupling::CoSimulation exchanges skin motion
 // and skin forces every fluid step. Outputs beside the fluid's: the deformed skins
-// (DIR/skins.xdmf, with every particle frame), each body's probe displacement
-// (probes.csv columns and DIR/<body>_displacement.csv: time_s, dx_m, dy_m), and a
-// summary line with the RMS error against the case's reference curve and the wall time.
+// (DIR/skins.xdmf, with every particle frame: displacement from the initial skin,
+// velocity, fluid force), each body's probe displacement (probes.csv columns and
+// DIR/<body>_displacement.csv: time_s, dx_m, dy_m), and a summary line with the RMS error
+// against the case's reference curve and the wall time.
 
 #include "apps/body_case_keys.h"
 #include "apps/fluid_simulation.h"
+#include "apps/surface_output.h"
 #include "coupling/co_simulation.h"
 #include "coupling/displacement_history.h"
-#include "coupling/skin_output.h"
 
 #include <chrono>
 #include <memory>
@@ -41,8 +42,8 @@ public:
   double peak_fluid_speed() const override { return fluid_.peak_fluid_speed(); }
   double peak_fluid_speed_time() const override { return fluid_.peak_fluid_speed_time(); }
 
-  /// Writes the displacement CSVs and returns the summary line (RMS errors, wall time).
-  std::string finish(const std::string& output_directory) const;
+  /// Writes the displacement CSVs; returns one summary line per body (RMS errors, wall time).
+  std::string finish(const std::string& output_directory) const override;
 
 private:
   void record();
@@ -53,7 +54,8 @@ private:
   std::unique_ptr<coupling::CoSimulation<2>> cosim_;
   std::vector<Eigen::Vector2d> probe_start_;
   std::vector<coupling::DisplacementHistory> histories_;
-  mutable coupling::SkinOutput<2> skins_;
+  std::vector<std::vector<Eigen::Vector2d>> reference_skins_; ///< skin nodes at t = 0
+  mutable SurfaceOutput<2> skins_;
   std::chrono::steady_clock::time_point started_;
   double restored_wall_seconds_ = 0;
 };

@@ -3,14 +3,39 @@
 #include "common/hdf5_file.h"
 #include "sph/probes.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace chipflex::apps
 {
 template <int dim>
-FluidSimulation<dim>::FluidSimulation(const sph::CaseDescription<dim>& description)
-    : description_(description), fluid_(sph::build_fluid(description_))
+FluidSimulation<dim>::FluidSimulation(const sph::CaseDescription<dim>& description,
+                                      const std::string& output_directory)
+    : description_(description), fluid_(sph::build_fluid(description_)),
+      walls_(output_directory, "walls")
 {
+}
+
+template <int dim>
+ParticleFrame FluidSimulation<dim>::frame() const
+{
+  fluid_->initialise();
+  std::vector<typename SurfaceOutput<dim>::Surface> walls;
+  for (int id = 0; id < fluid_->n_walls(); ++id)
+  {
+    if (std::find(excluded_walls_.begin(), excluded_walls_.end(), id) != excluded_walls_.end())
+      continue;
+    const auto& w = fluid_->wall(id);
+    walls.push_back({w.name,
+                     w.vertices,
+                     w.faces,
+                     {{"velocity", "m/s", w.velocities},
+                      {"fluid_force", dim == 2 ? "N/m" : "N", fluid_->wall_vertex_forces(id)}}});
+  }
+  // A fluid without walls (no tank) writes no walls.xdmf rather than an empty one.
+  if (!walls.empty())
+    walls_.write(time(), walls);
+  return particle_frame(*fluid_);
 }
 
 template <int dim>
@@ -47,6 +72,7 @@ template <int dim>
 void FluidSimulation<dim>::load(const Hdf5File& file)
 {
   fluid_->load(file, "/fluid");
+  walls_.resume(time());
 }
 
 template <int dim>

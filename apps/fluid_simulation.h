@@ -1,7 +1,10 @@
 #pragma once
 // The SPH fluid as a Simulation: built from a case description, gauges from the case.
+// Every frame also writes the fluid's walls (tank, extra walls) to DIR/walls.xdmf, except
+// those a body owns (its skin goes to DIR/skins.xdmf).
 
 #include "apps/simulation.h"
+#include "apps/surface_output.h"
 #include "sph/case_setup.h"
 #include "sph/fluid_solver.h"
 
@@ -13,17 +16,15 @@ template <int dim>
 class FluidSimulation : public Simulation
 {
 public:
-  explicit FluidSimulation(const sph::CaseDescription<dim>& description);
+  FluidSimulation(const sph::CaseDescription<dim>& description,
+                  const std::string& output_directory);
 
   /// Bodies (coupling/) may add walls and hooks to fluid() until the first frame or step.
   void advance() override { fluid_->step(); }
   double time() const override { return fluid_->time(); }
   std::int64_t step_count() const override { return fluid_->step_count(); }
-  ParticleFrame frame() const override
-  {
-    fluid_->initialise();
-    return particle_frame(*fluid_);
-  }
+  /// The particles; writes the walls of the same instant beside them.
+  ParticleFrame frame() const override;
   std::vector<std::string> probe_columns() const override;
   std::vector<double> probe_values() const override;
   void save(Hdf5File& file) const override;
@@ -38,10 +39,14 @@ public:
   double peak_fluid_speed_time() const override { return fluid_->peak_fluid_speed_time(); }
 
   sph::FluidSolver<dim>& fluid() { return *fluid_; }
+  /// The wall `id` of fluid() is a body's skin: leave it out of DIR/walls.xdmf.
+  void exclude_from_wall_output(int id) { excluded_walls_.push_back(id); }
   const sph::CaseDescription<dim>& description() const { return description_; }
 
 private:
   sph::CaseDescription<dim> description_; ///< with derived c0 and domain
   std::unique_ptr<sph::FluidSolver<dim>> fluid_;
+  mutable SurfaceOutput<dim> walls_;
+  std::vector<int> excluded_walls_;
 };
 } // namespace chipflex::apps

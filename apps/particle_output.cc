@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <stdexcept>
 
 namespace chipflex::apps
 {
@@ -20,6 +22,7 @@ ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid)
   f.pressure.resize(f.n);
   f.density.resize(f.n);
   f.kind.resize(f.n);
+  f.id.resize(f.n);
   const auto& p = fluid.particles();
   for (std::size_t i = 0; i < f.n; ++i)
   {
@@ -31,6 +34,7 @@ ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid)
     f.pressure[i] = fluid.pressure(i);
     f.density[i] = p.density[i];
     f.kind[i] = std::int64_t(fluid.kind(i));
+    f.id[i] = std::int64_t(p.id[i]);
   }
   return f;
 }
@@ -41,6 +45,11 @@ template ParticleFrame particle_frame(const sph::FluidSolver<3>&);
 ParticleOutput::ParticleOutput(const std::string& directory) : directory_(directory)
 {
   std::filesystem::create_directories(directory_ + "/particles");
+}
+
+double ParticleOutput::last_time() const
+{
+  return frames_.empty() ? -std::numeric_limits<double>::infinity() : frames_.back().time;
 }
 
 void ParticleOutput::resume(double time)
@@ -76,6 +85,13 @@ void ParticleOutput::write(double time, const ParticleFrame& f)
       h5.write("/pressure", f.pressure, {f.n});
       h5.write("/density", f.density, {f.n});
       h5.write("/kind", f.kind, {f.n});
+      h5.write("/id", f.id, {f.n});
+      // One vertex cell per particle: ParaView's Xdmf3 readers build no cells from a
+      // Polyvertex topology without connectivity (the legacy reader does).
+      std::vector<std::int64_t> cells(f.n);
+      for (std::size_t i = 0; i < f.n; ++i)
+        cells[i] = std::int64_t(i);
+      h5.write("/cells", cells, {f.n});
     }
     out.commit();
   }
@@ -94,27 +110,31 @@ void ParticleOutput::write_xdmf() const
          "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (const auto& f : frames_)
     {
-      auto item = [&](const std::string& set, int components, const char* type, int bytes)
+      auto item = [&](const std::string& set, int components, const char* type)
       {
         std::string dims = std::to_string(f.n) + (components > 1 ? " 3" : "");
-        return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + type + "\" Precision=\"" +
-               std::to_string(bytes) + "\" Format=\"HDF\">" + f.file + ":/" + set + "</DataItem>";
+        return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + type +
+               "\" Precision=\"8\" Format=\"HDF\">" + f.file + ":/" + set + "</DataItem>";
       };
-      x << "   <Grid Name=\"frame\" GridType=\"Uniform\">\n"
+      auto attribute = [&](const char* name, const char* unit, int components, const char* type)
+      {
+        x << "    <Attribute Name=\"" << name << "\" AttributeType=\""
+          << (components > 1 ? "Vector" : "Scalar") << "\" Center=\"Node\">"
+          << "<Information Name=\"unit\" Value=\"" << unit << "\"/>" << item(name, components, type)
+          << "</Attribute>\n";
+      };
+      // The same Name in every frame: ParaView names the block after it.
+      x << "   <Grid Name=\"particles\" GridType=\"Uniform\">\n"
         << "    <Time Value=\"" << f.time << "\"/>\n"
         << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << f.n
-        << "\" NodesPerElement=\"1\"/>\n"
-        << "    <Geometry GeometryType=\"XYZ\">" << item("position", 3, "Float", 8)
-        << "</Geometry>\n";
-      const char* vectors[] = {"velocity"};
-      for (const char* v : vectors)
-        x << "    <Attribute Name=\"" << v << "\" AttributeType=\"Vector\" Center=\"Node\">"
-          << item(v, 3, "Float", 8) << "</Attribute>\n";
-      for (const char* s : {"pressure", "density"})
-        x << "    <Attribute Name=\"" << s << "\" AttributeType=\"Scalar\" Center=\"Node\">"
-          << item(s, 1, "Float", 8) << "</Attribute>\n";
-      x << "    <Attribute Name=\"kind\" AttributeType=\"Scalar\" Center=\"Node\">"
-        << item("kind", 1, "Int", 8) << "</Attribute>\n   </Grid>\n";
+        << "\" NodesPerElement=\"1\">" << item("cells", 1, "Int") << "</Topology>\n"
+        << "    <Geometry GeometryType=\"XYZ\">" << item("position", 3, "Float") << "</Geometry>\n";
+      attribute("velocity", "m/s", 3, "Float");
+      attribute("pressure", "Pa", 1, "Float");
+      attribute("density", "kg/m^3", 1, "Float");
+      attribute("kind", "0 boundary, 1 fluid", 1, "Int");
+      attribute("id", "stable per kind", 1, "Int");
+      x << "   </Grid>\n";
     }
     x << "  </Grid>\n </Domain>\n</Xdmf>\n";
     if (!x)

@@ -1,6 +1,10 @@
 // `chipflex run CASE.prm --out DIR`: builds the simulation from the case file and
-// advances it to the end time, writing particle frames (DIR/particles.xdmf), gauges
-// (DIR/probes.csv) and, on request, atomic checkpoints (DIR/checkpoint.h5).
+// advances it to the end time, writing particle frames (DIR/particles.xdmf, with the
+// walls and skins of the same instants), gauges (DIR/probes.csv), DIR/summary.txt and, on
+// request, atomic checkpoints (DIR/checkpoint.h5). A run the solver stops
+// (SimulationError: a blow-up, a particle leaving the domain) still writes a frame at the
+// stop time, its gauges, its result files and a summary.txt saying status=stopped, then
+// exits non-zero (main: status 3). docs/output.md lists the outputs.
 //
 // Coupling plugs in at make_simulation(): it returns any Simulation (a fluid alone
 // today; fluid plus bodies when the case has `subsection bodies`). The loop below only
@@ -20,9 +24,12 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <omp.h>
+#include <sstream>
+#include <stdexcept>
 
 namespace chipflex::apps
 {
@@ -42,8 +49,8 @@ std::unique_ptr<Simulation> make_simulation(const CaseFile& c, const std::string
                                                dir);
   }
   if (c.dimension == 2)
-    return std::make_unique<FluidSimulation<2>>(c.case_2d);
-  return std::make_unique<FluidSimulation<3>>(c.case_3d);
+    return std::make_unique<FluidSimulation<2>>(c.case_2d, dir);
+  return std::make_unique<FluidSimulation<3>>(c.case_3d, dir);
 }
 
 struct Cadence
@@ -67,6 +74,40 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const Cade
   out.commit();
 }
 
+/// DIR/summary.txt: a status line (status=finished|stopped, reason="..." when stopped,
+/// time, steps, frames), then the simulation's result lines. Returns the text.
+std::string write_summary(const std::string& dir, const Simulation& sim, std::size_t frames,
+                          const std::string& stop_reason)
+{
+  std::ostringstream s;
+  s.precision(9);
+  s << "status=" << (stop_reason.empty() ? "finished" : "stopped");
+  if (!stop_reason.empty())
+  {
+    // One line, and the value stays one quoted field for scripts.
+    std::string reason = stop_reason;
+    for (char& c : reason)
+      if (c == '"' || c == '\n' || c == '\r')
+        c = c == '"' ? '\'' : ' ';
+    s << " reason=\"" << reason << "\"";
+  }
+  s << " t_s=" << sim.time() << " steps=" << sim.step_count() << " frames=" << frames
+    << " lost_particles=" << sim.n_lost_particles()
+    << " peak_fluid_speed_m_s=" << sim.peak_fluid_speed() << "\n";
+  const std::string results = sim.finish(dir);
+  if (!results.empty())
+    s << results << "\n";
+  AtomicOutput out(dir + "/summary.txt");
+  {
+    std::ofstream f(out.temporary_path());
+    f << s.str();
+    if (!f)
+      throw std::runtime_error("cannot write " + out.temporary_path());
+  }
+  out.commit();
+  return s.str();
+}
+
 /// Next multiple of `interval` strictly after `time` (k * interval, no drift).
 double next_after(double time, double interval)
 {
@@ -80,8 +121,9 @@ double next_after(double time, double interval)
 int run_command(const Arguments& args)
 {
   CommandLine cl("chipflex run CASE.prm --out DIR [options]",
-                 "Run an SPH case: particle frames (DIR/particles.xdmf), gauges "
-                 "(DIR/probes.csv), checkpoints (DIR/checkpoint.h5).");
+                 "Run an SPH case: particle frames (DIR/particles.xdmf), walls "
+                 "(DIR/walls.xdmf), body skins (DIR/skins.xdmf), gauges (DIR/probes.csv), "
+                 "DIR/summary.txt, checkpoints (DIR/checkpoint.h5); docs/output.md.");
   cl.add_positional("CASE.prm", "case file (deal.II ParameterHandler format)", false);
   cl.add_option("--out", "DIR", "output folder (created)");
   cl.add_option("--threads", "N", "OpenMP threads (default: OMP_NUM_THREADS or all cores)");
@@ -188,16 +230,30 @@ int run_command(const Arguments& args)
       progress.update(t, sim->step_count());
     }
   }
-  catch (const SimulationError&)
+  catch (const SimulationError& e)
   {
     report_lost();
-    probes.flush(); // the gauges up to the failure; the last checkpoint stays as it was
+    // The state the solver stopped in is what the user needs to see: a frame at the stop
+    // time (unless the last frame is already there), the gauges up to it, the result
+    // files and the summary. The last checkpoint stays as it was.
+    progress.finish(sim->time(), sim->step_count());
+    try
+    {
+      if (sim->time() > particles.last_time())
+        particles.write(sim->time(), sim->frame());
+      probes.flush();
+      std::cout << write_summary(dir, *sim, particles.n_frames(), e.what()) << std::flush;
+    }
+    catch (const std::exception& w)
+    {
+      // The stop is the news; a failing output must not hide it.
+      std::cerr << "chipflex run: outputs at the stop incomplete: " << w.what() << "\n";
+    }
     throw;
   }
   progress.finish(sim->time(), sim->step_count());
   probes.flush();
-  if (const auto* coupled = dynamic_cast<const CoupledSimulation*>(sim.get()))
-    std::cout << coupled->finish(dir) << std::endl;
+  std::cout << write_summary(dir, *sim, particles.n_frames(), "") << std::flush;
   std::cout << "finished at t = " << sim->time() << " s after " << sim->step_count() << " steps; "
             << particles.n_frames() << " frames in " << dir
             << "/particles.xdmf; lost_particles=" << sim->n_lost_particles()

@@ -41,5 +41,12 @@ public:
   virtual double peak_fluid_speed_time() const = 0;
   /// A few lines describing the set-up, printed at the start.
   virtual std::string summary() const = 0;
+  /// At the end of a run, finished or stopped: writes the simulation's own result files
+  /// under `directory` and returns its result lines for DIR/summary.txt ("" if none).
+  virtual std::string finish(const std::string& directory) const
+  {
+    (void)directory;
+    return "";
+  }
 };
 } // namespace chipflex::apps
