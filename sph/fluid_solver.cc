@@ -337,6 +337,16 @@ double FluidSolver<dim>::step()
   return dt;
 }
 
+// Spray is water at the surrounding (zero) pressure: a fluid particle whose kernel support
+// is less than spray_fill_threshold filled keeps rho >= rho0, as a wall particle does, so
+// it holds no tension. Without that, a detached pair below rho0 attracts, binds, orbits
+// with its density drifting down and flies apart at several times c0 (docs/sph.md).
+template <int dim>
+float FluidSolver<dim>::spray_fill_limit() const
+{
+  return parameters_.cut_spray_tension ? float(spray_fill_threshold) : 0.0f;
+}
+
 template <int dim>
 void FluidSolver<dim>::update_verlet(double dt)
 {
@@ -349,6 +359,7 @@ void FluidSolver<dim>::update_verlet(double dt)
   // from the current state decouples the odd and even step sequences (DualSPHysics).
   const float dtv = float(euler ? dt : 2 * dt);
   const float rho0 = float(parameters_.reference_density);
+  const float spray_fill = spray_fill_limit();
 #pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -360,7 +371,7 @@ void FluidSolver<dim>::update_verlet(double dt)
       p.density[i] = std::max(rho, rho0); // DBC: a wall never pulls the fluid
       continue;
     }
-    p.density[i] = rho;
+    p.density[i] = p.fill[i] < spray_fill ? std::max(rho, rho0) : rho;
     for (int d = 0; d < dim; ++d)
     {
       const float v = p.velocity[d][i], a = p.acceleration[d][i];
@@ -378,6 +389,7 @@ void FluidSolver<dim>::predict_symplectic(double dt)
   auto& p = particles_;
   const std::size_t nb = p.n_boundary, n = p.size();
   const float half = float(0.5 * dt), rho0 = float(parameters_.reference_density);
+  const float spray_fill = spray_fill_limit();
 #pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -393,7 +405,7 @@ void FluidSolver<dim>::predict_symplectic(double dt)
       p.density[i] = std::max(rho, rho0);
       continue;
     }
-    p.density[i] = rho;
+    p.density[i] = p.fill[i] < spray_fill ? std::max(rho, rho0) : rho;
     for (int d = 0; d < dim; ++d)
     {
       p.position[d][i] += 0.5 * dt * double(p.velocity[d][i]);
@@ -408,6 +420,7 @@ void FluidSolver<dim>::correct_symplectic(double dt)
   auto& p = particles_;
   const std::size_t nb = p.n_boundary, n = p.size();
   const float rho0 = float(parameters_.reference_density);
+  const float spray_fill = spray_fill_limit();
 #pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -418,7 +431,7 @@ void FluidSolver<dim>::correct_symplectic(double dt)
       p.density[i] = std::max(rho, rho0);
       continue;
     }
-    p.density[i] = rho;
+    p.density[i] = p.fill[i] < spray_fill ? std::max(rho, rho0) : rho;
     for (int d = 0; d < dim; ++d)
     {
       const float v = p.velocity_previous[d][i] + float(dt) * p.acceleration[d][i];

@@ -182,6 +182,7 @@ private:
   void correct_symplectic(double dt);
   void check_time_step(double dt) const;
   void remove_lost_particles();
+  float spray_fill_limit() const;
   /// The fluid particle with the largest acceleration of the last force pass.
   std::size_t most_accelerated_particle() const;
   void run_hooks(HookPoint point);

@@ -113,17 +113,12 @@ void FluidSolver<dim>::force_pass()
   auto& im = *impl_;
   const std::size_t nb = p.n_boundary, n = p.size();
   const float mass = float(mass_);
-  // Spray holds no tension: without the cut, a detached pair of particles below rho0
-  // attracts, binds, orbits with its density drifting and flies apart at several times
-  // c0 (docs/sph.md). The fluid itself keeps its tension: it holds stretched water together.
-  const float spray_fill = parameters_.cut_spray_tension ? float(spray_fill_threshold) : 0.0f;
 #pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
     const float rho = p.density[i];
     const float pressure = im.eos.pressure(rho);
-    const float floor = i >= nb && p.fill[i] < spray_fill ? 0.0f : -INFINITY;
-    p.pressure_term[i] = std::max(pressure, floor) / (rho * rho);
+    p.pressure_term[i] = pressure / (rho * rho);
     p.volume[i] = mass / rho;
   }
   ForcePassInput<dim> in;
