@@ -1,12 +1,12 @@
 // `chipflex compare MESH.msh BODY.h5 --load force:GROUP:fx,fy[,fz]`: can the reduced body be
 // trusted for this load? Static and step-load responses of the full FE model against the
-// reduced body (fem/reduce.h). Runs under mpirun too; only rank 0 prints and writes.
+// reduced body (compare/compare_with_full.h). Runs under mpirun too; only rank 0 prints and writes.
 
 #include "apps/command_line.h"
 #include "apps/commands.h"
 #include "common/atomic_output.h"
 #include "common/input_error.h"
-#include "fem/reduce.h"
+#include "compare/compare_with_full.h"
 
 #include <deal.II/base/mpi.h>
 #include <fstream>
@@ -31,7 +31,7 @@ int compare_command(const Arguments& args)
   cl.add_alias("-o", "--output");
   if (!cl.parse(args))
     return 0;
-  fem::CompareSettings settings;
+  compare::CompareSettings settings;
   settings.mesh_file = cl.get("MESH");
   settings.body_file = cl.get("BODY");
   settings.load = cl.get("--load");
@@ -45,7 +45,7 @@ int compare_command(const Arguments& args)
   char* argv_storage[] = {name.data(), nullptr};
   char** argv = argv_storage;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto result = fem::compare_with_full(settings);
+  const auto result = compare::compare_with_full(settings);
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
     return 0;
 

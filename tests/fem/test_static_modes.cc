@@ -3,11 +3,13 @@
 // K^-1 f exactly); with normal modes only it converges slowly, as modal truncation of a
 // static load must (the residual flexibility sum_k>m phi_k phi_k^T / omega_k^2 is lost).
 #include "common/reduced_body_file.h"
+#include "compare/compare_with_full.h"
 #include "fem_test_support.h"
 
 #include <catch2/catch.hpp>
 
 using namespace chipflex;
+using namespace chipflex::compare;
 using namespace chipflex::fem;
 using namespace chipflex::fem::testing;
 
