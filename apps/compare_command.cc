@@ -4,6 +4,7 @@
 
 #include "apps/command_line.h"
 #include "apps/commands.h"
+#include "apps/json_value.h"
 #include "common/atomic_output.h"
 #include "common/input_error.h"
 #include "compare/compare_with_full.h"
@@ -76,25 +77,22 @@ int compare_command(const Arguments& args)
     }
     output.commit();
   }
-  std::cout << std::setprecision(6);
   if (cl.flag("--json"))
   {
-    std::cout << "{\n  \"static_rel_error\": " << result.static_rel_error
-              << ",\n  \"transient_rel_error\": " << result.transient_rel_error
-              << ",\n  \"full_seconds\": " << result.full_seconds
-              << ",\n  \"reduced_seconds\": " << result.reduced_seconds
-              << ",\n  \"static_full_m\": [";
-    for (int d = 0; d < dim; ++d)
-      std::cout << (d ? ", " : "") << result.static_full[d];
-    std::cout << "],\n  \"static_reduced_m\": [";
-    for (int d = 0; d < dim; ++d)
-      std::cout << (d ? ", " : "") << result.static_reduced[d];
-    std::cout << "],\n  \"n_steps\": " << result.time.size() - 1
-              << ",\n  \"dt\": " << (result.time.size() > 1 ? result.time[1] : 0.) << "\n}\n";
+    std::cout << "{\n  \"static_rel_error\": " << json_number(result.static_rel_error)
+              << ",\n  \"transient_rel_error\": " << json_number(result.transient_rel_error)
+              << ",\n  \"full_seconds\": " << json_number(result.full_seconds)
+              << ",\n  \"reduced_seconds\": " << json_number(result.reduced_seconds)
+              << ",\n  \"static_full_m\": " << json_array(result.static_full, dim)
+              << ",\n  \"static_reduced_m\": " << json_array(result.static_reduced, dim)
+              << ",\n  \"n_steps\": " << result.time.size() - 1
+              << ",\n  \"dt\": " << json_number(result.time.size() > 1 ? result.time[1] : 0.)
+              << "\n}\n";
   }
   else
   {
-    std::cout << "load " << settings.load << ", centroid of '" << result.group << "'\n"
+    std::cout << std::setprecision(6) << "load " << settings.load << ", centroid of '"
+              << result.group << "'\n"
               << "  static     full " << result.static_full.transpose() << " m, reduced "
               << result.static_reduced.transpose() << " m, relative error "
               << result.static_rel_error << "\n"
