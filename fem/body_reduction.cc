@@ -72,6 +72,8 @@ ReducedBodyData reduce(const GmshMeshData& mesh, const ReductionSettings& settin
   data.psi = reduction.basis;
   data.mode_kinds = reduction.kinds;
   data.stiffness_matrix = reduction.reduced_stiffness;
+  // K_red is diagonal (the static modes rotated to Ritz vectors, fem/modal_reduction.h), so
+  // its diagonal holds the reduced model's own frequencies squared.
   data.frequencies_hz.resize(data.psi.cols());
   for (int k = 0; k < data.psi.cols(); ++k)
     data.frequencies_hz[k] = std::sqrt(std::max(0., data.stiffness_matrix(k, k))) / (2 * M_PI);
