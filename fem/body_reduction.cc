@@ -4,6 +4,7 @@
 #include "fem/elastic_body.h"
 #include "fem/gmsh_reader.h"
 #include "fem/inertia_invariants.h"
+#include "fem/matrix_export.h"
 #include "fem/modal_reduction.h"
 #include "fem/reduce.h"
 
@@ -40,7 +41,8 @@ ReducedBodyData reduce(const GmshMeshData& mesh, const ReductionSettings& settin
   body.assemble_system();
   timings.assembly = seconds_since(t0);
   if (!settings.export_directory.empty())
-    body.export_matrices(settings.export_directory);
+    export_matrices(body, settings.export_directory,
+                    parse_matrix_export_format(settings.export_format, "--export-matrices-format"));
 
   ModalReduction<dim> reduction(body, settings.n_modes, cases);
   reduction.run(timings);

@@ -21,7 +21,8 @@ struct ReductionSettings
   unsigned int n_modes = 10;             ///< elastic normal modes (rigid modes never counted)
   std::vector<std::string> static_modes; ///< load cases, e.g. "pressure:skin", "force:tip:0,-1"
   std::string vtu_file;                  ///< mode shapes for ParaView; empty: none
-  std::string export_directory;          ///< M.mtx, K.mtx, dof_nodes.csv; empty: none
+  std::string export_directory;          ///< M and K (docs/export_matrices.md); empty: none
+  std::string export_format = "mtx";     ///< mtx: M.mtx, K.mtx, dof_nodes.csv; hdf5: matrices.h5
 };
 
 struct ReductionTimings
