@@ -1,12 +1,13 @@
 // `chipflex compare MESH.msh BODY.h5 --load force:GROUP:fx,fy[,fz]`: can the reduced body be
 // trusted for this load? Static and step-load responses of the full FE model against the
-// reduced body (fem/reduce.h). Runs under mpirun too; only rank 0 prints and writes.
+// reduced body (compare/compare_with_full.h). Runs under mpirun too; only rank 0 prints and writes.
 
 #include "apps/command_line.h"
 #include "apps/commands.h"
+#include "apps/json_value.h"
 #include "common/atomic_output.h"
 #include "common/input_error.h"
-#include "fem/reduce.h"
+#include "compare/compare_with_full.h"
 
 #include <deal.II/base/mpi.h>
 #include <fstream>
@@ -31,7 +32,7 @@ int compare_command(const Arguments& args)
   cl.add_alias("-o", "--output");
   if (!cl.parse(args))
     return 0;
-  fem::CompareSettings settings;
+  compare::CompareSettings settings;
   settings.mesh_file = cl.get("MESH");
   settings.body_file = cl.get("BODY");
   settings.load = cl.get("--load");
@@ -45,7 +46,7 @@ int compare_command(const Arguments& args)
   char* argv_storage[] = {name.data(), nullptr};
   char** argv = argv_storage;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto result = fem::compare_with_full(settings);
+  const auto result = compare::compare_with_full(settings);
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
     return 0;
 
@@ -76,25 +77,22 @@ int compare_command(const Arguments& args)
     }
     output.commit();
   }
-  std::cout << std::setprecision(6);
   if (cl.flag("--json"))
   {
-    std::cout << "{\n  \"static_rel_error\": " << result.static_rel_error
-              << ",\n  \"transient_rel_error\": " << result.transient_rel_error
-              << ",\n  \"full_seconds\": " << result.full_seconds
-              << ",\n  \"reduced_seconds\": " << result.reduced_seconds
-              << ",\n  \"static_full_m\": [";
-    for (int d = 0; d < dim; ++d)
-      std::cout << (d ? ", " : "") << result.static_full[d];
-    std::cout << "],\n  \"static_reduced_m\": [";
-    for (int d = 0; d < dim; ++d)
-      std::cout << (d ? ", " : "") << result.static_reduced[d];
-    std::cout << "],\n  \"n_steps\": " << result.time.size() - 1
-              << ",\n  \"dt\": " << (result.time.size() > 1 ? result.time[1] : 0.) << "\n}\n";
+    std::cout << "{\n  \"static_rel_error\": " << json_number(result.static_rel_error)
+              << ",\n  \"transient_rel_error\": " << json_number(result.transient_rel_error)
+              << ",\n  \"full_seconds\": " << json_number(result.full_seconds)
+              << ",\n  \"reduced_seconds\": " << json_number(result.reduced_seconds)
+              << ",\n  \"static_full_m\": " << json_array(result.static_full, dim)
+              << ",\n  \"static_reduced_m\": " << json_array(result.static_reduced, dim)
+              << ",\n  \"n_steps\": " << result.time.size() - 1
+              << ",\n  \"dt\": " << json_number(result.time.size() > 1 ? result.time[1] : 0.)
+              << "\n}\n";
   }
   else
   {
-    std::cout << "load " << settings.load << ", centroid of '" << result.group << "'\n"
+    std::cout << std::setprecision(6) << "load " << settings.load << ", centroid of '"
+              << result.group << "'\n"
               << "  static     full " << result.static_full.transpose() << " m, reduced "
               << result.static_reduced.transpose() << " m, relative error "
               << result.static_rel_error << "\n"

@@ -2,6 +2,7 @@
 
 #include "apps/command_line.h"
 #include "apps/commands.h"
+#include "apps/json_value.h"
 #include "common/reduced_body_file.h"
 
 #include <iomanip>
@@ -12,57 +13,31 @@ namespace chipflex::apps
 {
 namespace
 {
-std::string quoted(const std::string& s)
-{
-  std::ostringstream out;
-  out << '"';
-  for (const char c : s)
-    if (c == '"' || c == '\\')
-      out << '\\' << c;
-    else if (static_cast<unsigned char>(c) < 0x20)
-      out << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c) << std::dec;
-    else
-      out << c;
-  out << '"';
-  return out.str();
-}
-
-template <typename Vector>
-std::string list(const Vector& v, int n)
-{
-  std::ostringstream out;
-  out << std::setprecision(17) << "[";
-  for (int i = 0; i < n; ++i)
-    out << (i ? ", " : "") << v[i];
-  out << "]";
-  return out.str();
-}
-
 void print_json(const ReducedBodyData& b)
 {
   std::ostringstream o;
-  o << std::setprecision(17) << "{\n";
+  o << "{\n";
   o << "  \"format_version\": " << ReducedBodyData::format_version << ",\n";
   o << "  \"dim\": " << b.dim << ",\n";
-  o << "  \"model\": " << quoted(b.model) << ",\n";
-  o << "  \"youngs_modulus\": " << b.youngs_modulus << ",\n";
-  o << "  \"poisson_ratio\": " << b.poisson_ratio << ",\n";
-  o << "  \"density\": " << b.density << ",\n";
+  o << "  \"model\": " << json_string(b.model) << ",\n";
+  o << "  \"youngs_modulus\": " << json_number(b.youngs_modulus) << ",\n";
+  o << "  \"poisson_ratio\": " << json_number(b.poisson_ratio) << ",\n";
+  o << "  \"density\": " << json_number(b.density) << ",\n";
   o << "  \"element_degree\": " << b.element_degree << ",\n";
-  o << "  \"mesh_file\": " << quoted(b.mesh_file) << ",\n";
-  o << "  \"mesh_hash\": " << quoted(b.mesh_hash) << ",\n";
-  o << "  \"clamp_set\": " << quoted(b.clamp_set) << ",\n";
-  o << "  \"mass\": " << b.mass << ",\n";
-  o << "  \"center_of_mass\": " << list(b.center_of_mass, b.dim) << ",\n";
+  o << "  \"mesh_file\": " << json_string(b.mesh_file) << ",\n";
+  o << "  \"mesh_hash\": " << json_string(b.mesh_hash) << ",\n";
+  o << "  \"clamp_set\": " << json_string(b.clamp_set) << ",\n";
+  o << "  \"mass\": " << json_number(b.mass) << ",\n";
+  o << "  \"center_of_mass\": " << json_array(b.center_of_mass, b.dim) << ",\n";
   o << "  \"inertia\": [";
   for (int i = 0; i < 3; ++i)
-    o << (i ? ", " : "") << list(b.inertia_tensor.row(i), 3);
+    o << (i ? ", " : "") << json_array(b.inertia_tensor.row(i), 3);
   o << "],\n";
   o << "  \"n_modes\": " << b.n_modes() << ",\n";
-  o << "  \"frequencies_hz\": " << list(b.frequencies_hz, b.n_modes()) << ",\n";
+  o << "  \"frequencies_hz\": " << json_array(b.frequencies_hz, b.n_modes()) << ",\n";
   o << "  \"mode_kinds\": [";
   for (int k = 0; k < b.n_modes(); ++k)
-    o << (k ? ", " : "") << quoted(b.mode_kinds[k]);
+    o << (k ? ", " : "") << json_string(b.mode_kinds[k]);
   o << "],\n";
   o << "  \"n_nodes\": " << b.n_nodes() << ",\n";
   o << "  \"n_skin_nodes\": " << b.skin_nodes.size() << ",\n";
@@ -71,7 +46,7 @@ void print_json(const ReducedBodyData& b)
   bool first = true;
   for (const auto& [name, ids] : b.node_sets)
   {
-    o << (first ? "" : ", ") << quoted(name) << ": " << ids.size();
+    o << (first ? "" : ", ") << json_string(name) << ": " << ids.size();
     first = false;
   }
   o << "}\n}\n";

@@ -66,7 +66,10 @@ int reduce_command(const Arguments& args)
   cl.add_repeated_option("--static-modes", "LIST",
                          "static correction modes, e.g. pressure:skin,force:tip:0,-1");
   cl.add_option("--degree", "P", "element degree, 1 or 2", "2");
-  cl.add_option("--export-matrices", "DIR", "write M.mtx, K.mtx, dof_nodes.csv (one process)");
+  cl.add_option("--export-matrices", "DIR",
+                "write M and K, clamped DoFs left out (one process; docs/export_matrices.md)");
+  cl.add_option("--export-matrices-format", "FORMAT",
+                "mtx: M.mtx, K.mtx, dof_nodes.csv; hdf5: matrices.h5 (CSR datasets)", "mtx");
   cl.add_option("--vtu", "FILE", "mode shapes for ParaView (.vtu)");
   cl.add_option("--petsc-options", "'OPTS'", "options for PETSc/SLEPc, e.g. '-log_view'");
   if (!cl.parse(args))
@@ -94,6 +97,10 @@ int reduce_command(const Arguments& args)
   settings.degree = degree;
   if (cl.has("--export-matrices"))
     settings.export_directory = cl.get("--export-matrices");
+  settings.export_format = cl.get("--export-matrices-format");
+  if (settings.export_format != "mtx" && settings.export_format != "hdf5")
+    throw InputError("--export-matrices-format",
+                     "expected mtx or hdf5, got '" + settings.export_format + "'");
   if (cl.has("--vtu"))
     settings.vtu_file = cl.get("--vtu");
   const std::string output = cl.get("--output");

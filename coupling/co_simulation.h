@@ -1,6 +1,6 @@
 #pragma once
 // The co-simulation loop: one SPH fluid and any number of bodies coupled through their
-// skins (DESIGN.md, coupling). Per fluid step t -> t + dt:
+// skins (docs/coupling.md). Per fluid step t -> t + dt:
 //
 //   1. before the fluid's force pass (HookPoint::before_forces) every body publishes its
 //      skin at time t (world positions and velocities) and the fluid moves the body's

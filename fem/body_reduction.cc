@@ -4,6 +4,7 @@
 #include "fem/elastic_body.h"
 #include "fem/gmsh_reader.h"
 #include "fem/inertia_invariants.h"
+#include "fem/matrix_export.h"
 #include "fem/modal_reduction.h"
 #include "fem/reduce.h"
 
@@ -40,7 +41,8 @@ ReducedBodyData reduce(const GmshMeshData& mesh, const ReductionSettings& settin
   body.assemble_system();
   timings.assembly = seconds_since(t0);
   if (!settings.export_directory.empty())
-    body.export_matrices(settings.export_directory);
+    export_matrices(body, settings.export_directory,
+                    parse_matrix_export_format(settings.export_format, "--export-matrices-format"));
 
   ModalReduction<dim> reduction(body, settings.n_modes, cases);
   reduction.run(timings);
@@ -72,6 +74,8 @@ ReducedBodyData reduce(const GmshMeshData& mesh, const ReductionSettings& settin
   data.psi = reduction.basis;
   data.mode_kinds = reduction.kinds;
   data.stiffness_matrix = reduction.reduced_stiffness;
+  // K_red is diagonal (the static modes rotated to Ritz vectors, fem/modal_reduction.h), so
+  // its diagonal holds the reduced model's own frequencies squared.
   data.frequencies_hz.resize(data.psi.cols());
   for (int k = 0; k < data.psi.cols(); ++k)
     data.frequencies_hz[k] = std::sqrt(std::max(0., data.stiffness_matrix(k, k))) / (2 * M_PI);

@@ -21,9 +21,7 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <fstream>
-#include <iomanip>
 #include <set>
-#include <sys/stat.h>
 
 namespace chipflex::fem
 {
@@ -511,64 +509,6 @@ void ElasticBody<dim>::output_modes(const std::string& path, const Eigen::Matrix
   {
     std::ofstream out(output.temporary_path());
     data_out.write_vtu(out);
-    if (!out)
-      throw InputError(path, "cannot write");
-  }
-  output.commit();
-}
-
-template <int dim>
-void ElasticBody<dim>::export_matrices(const std::string& directory) const
-{
-  if (n_processes != 1)
-    throw InputError("--export-matrices", "runs on one process only");
-  ::mkdir(directory.c_str(), 0755);
-  std::vector<long> row_of_dof(dof_handler.n_dofs(), -1);
-  long n_rows = 0;
-  for (types::global_dof_index d = 0; d < dof_handler.n_dofs(); ++d)
-    if (!constraints.is_constrained(d))
-      row_of_dof[d] = n_rows++;
-  auto write = [&](const PETScWrappers::MPI::SparseMatrix& matrix, const std::string& name)
-  {
-    std::vector<std::tuple<long, long, double>> entries;
-    for (types::global_dof_index d = 0; d < dof_handler.n_dofs(); ++d)
-    {
-      if (row_of_dof[d] < 0)
-        continue;
-      for (auto it = matrix.begin(d); it != matrix.end(d); ++it)
-        if (row_of_dof[it->column()] >= 0 && row_of_dof[it->column()] <= row_of_dof[d] &&
-            it->value() != 0)
-          entries.emplace_back(row_of_dof[d], row_of_dof[it->column()], it->value());
-    }
-    const std::string path = directory + "/" + name;
-    AtomicOutput output(path);
-    {
-      std::ofstream out(output.temporary_path());
-      out << "%%MatrixMarket matrix coordinate real symmetric\n"
-          << "% chipflex " << name << ": clamped DoFs eliminated; row -> node: dof_nodes.csv\n"
-          << n_rows << " " << n_rows << " " << entries.size() << "\n"
-          << std::setprecision(17);
-      for (const auto& [r, c, v] : entries)
-        out << r + 1 << " " << c + 1 << " " << v << "\n";
-      if (!out)
-        throw InputError(path, "cannot write");
-    }
-    output.commit();
-  };
-  write(mass_matrix, "M.mtx");
-  write(stiffness_matrix, "K.mtx");
-  const std::string path = directory + "/dof_nodes.csv";
-  AtomicOutput output(path);
-  {
-    std::ofstream out(output.temporary_path());
-    out << "row,node,component\n";
-    std::vector<std::pair<long, std::size_t>> rows;
-    for (std::size_t k = 0; k < dof_of_node.size(); ++k)
-      if (row_of_dof[dof_of_node[k]] >= 0)
-        rows.emplace_back(row_of_dof[dof_of_node[k]], k);
-    std::sort(rows.begin(), rows.end());
-    for (const auto& [r, k] : rows)
-      out << r + 1 << "," << k / dim << "," << k % dim << "\n";
     if (!out)
       throw InputError(path, "cannot write");
   }

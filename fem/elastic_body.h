@@ -63,8 +63,6 @@ public:
   /// ParaView file of mode shapes (node-ordered columns); call on every process, rank 0 writes.
   void output_modes(const std::string& path, const Eigen::MatrixXd& modes,
                     const std::vector<std::string>& names) const;
-  /// Matrix Market M.mtx, K.mtx (clamped DoFs eliminated) and dof_nodes.csv; one process.
-  void export_matrices(const std::string& directory) const;
 
   unsigned int n_nodes() const { return node_coordinates.size(); }
   bool is_clamped() const { return !clamp_group.empty(); }

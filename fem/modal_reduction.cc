@@ -4,8 +4,10 @@
 #include "fem/direct_solver.h"
 #include "fem/eigen_solver.h"
 
+#include <Eigen/Eigenvalues>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 namespace chipflex::fem
 {
@@ -28,6 +30,17 @@ double diagonal_ratio(const PETScWrappers::MPI::SparseMatrix& a,
   VecSum(da, &sa);
   VecSum(db, &sb);
   return PetscRealPart(sa) / PetscRealPart(sb);
+}
+
+/// The sign convention: the first (lowest row) entry within 1e-6 of the largest magnitude
+/// is positive; the tolerance keeps mirror-symmetric ties from flipping with round-off.
+bool has_negative_sign(const Eigen::VectorXd& v)
+{
+  const double largest = v.cwiseAbs().maxCoeff();
+  for (Eigen::Index i = 0; i < v.size(); ++i)
+    if (std::abs(v[i]) >= (1 - 1e-6) * largest)
+      return v[i] < 0;
+  return false;
 }
 } // namespace
 
@@ -61,6 +74,7 @@ void ModalReduction<dim>::run(ReductionTimings& timings)
   const auto t1 = std::chrono::steady_clock::now();
   orthonormalise_and_fix_signs();
   compute_reduced_stiffness();
+  rotate_static_modes_to_ritz_vectors();
   timings.basis = seconds_since(t1);
 }
 
@@ -225,19 +239,11 @@ void ModalReduction<dim>::orthonormalise_and_fix_signs()
                        "adds nothing to the modes before it (linearly dependent)");
     v /= norm;
     mv /= norm;
-    // Sign: the first (lowest row) entry within 1e-6 of the largest magnitude is positive;
-    // the tolerance keeps mirror-symmetric ties from flipping with round-off.
-    const double largest = v.cwiseAbs().maxCoeff();
-    for (Eigen::Index i = 0; i < v.size(); ++i)
-      if (std::abs(v[i]) >= (1 - 1e-6) * largest)
-      {
-        if (v[i] < 0)
-        {
-          v = -v;
-          mv = -mv;
-        }
-        break;
-      }
+    if (has_negative_sign(v))
+    {
+      v = -v;
+      mv = -mv;
+    }
     columns.push_back(std::move(v));
     mass_columns.push_back(std::move(mv));
     kinds.push_back(kind);
@@ -265,6 +271,36 @@ void ModalReduction<dim>::compute_reduced_stiffness()
   }
   reduced_stiffness = basis.transpose() * k_basis;
   reduced_stiffness = 0.5 * (reduced_stiffness + reduced_stiffness.transpose()).eval();
+}
+
+// After Gram-Schmidt, K_red is diagonal on the normal block and the normal-static block is
+// zero (Phi^T K s = Lambda Phi^T M s = 0, to the eigen solver's residual: measured 1e-14 of
+// the largest entry), but the block of two or more static modes is full: their diagonal
+// entries are Rayleigh quotients, not frequencies of the reduced model, and modal damping
+// built on that diagonal would not be diagonal in its modes. Solving the small eigenproblem
+// K_ss y = w^2 y of that block (M_ss = I, the basis being M-orthonormal) and rotating the
+// static columns S <- S Y makes K_red diagonal while M_red stays the identity: each static
+// column is then a Ritz vector of the span of the static modes, its diagonal entry a Ritz
+// value w^2 of the whole reduced pair, ascending. The span is unchanged, and so is every
+// undamped or Rayleigh-damped response of the reduced model (Y is orthogonal); only its
+// coordinates differ.
+template <int dim>
+void ModalReduction<dim>::rotate_static_modes_to_ritz_vectors()
+{
+  const int n_static = statics.size(), n_normal = normal.size();
+  if (n_static < 2) // one static mode: its Rayleigh quotient is its Ritz value
+    return;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ritz(
+      reduced_stiffness.bottomRightCorner(n_static, n_static));
+  if (ritz.info() != Eigen::Success)
+    throw std::runtime_error("static-mode block of K_red: eigen decomposition failed");
+  const Eigen::MatrixXd rotated = basis.rightCols(n_static) * ritz.eigenvectors();
+  for (int k = 0; k < n_static; ++k)
+  {
+    const Eigen::VectorXd column = rotated.col(k);
+    basis.col(n_normal + k) = has_negative_sign(column) ? Eigen::VectorXd(-column) : column;
+  }
+  compute_reduced_stiffness(); // Psi^T K Psi of the rotated basis, not a rotated copy of it
 }
 
 template class ModalReduction<2>;

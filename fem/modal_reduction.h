@@ -10,7 +10,10 @@
 //   3. the basis [Phi S] made M-orthonormal (static columns Gram-Schmidt against the
 //      normal ones, twice). K_red is then diagonal on the normal block (Phi^T K s =
 //      Lambda Phi^T M s = 0) and dense only on the small static block.
-//   4. sign convention: in each column the first row (node*dim + component) whose magnitude
+//   4. with two or more static modes, the static columns rotated to the Ritz vectors of
+//      their block (K_ss y = w^2 y): K_red is diagonal, its diagonal the reduced model's
+//      frequencies squared, M_red still the identity.
+//   5. sign convention: in each column the first row (node*dim + component) whose magnitude
 //      is within 1e-6 of the largest is positive, so every run, serial or `mpirun -np N`,
 //      writes the same modes.
 
@@ -30,7 +33,7 @@ public:
 
   Eigen::MatrixXd basis;             ///< (dim n) x m, node-ordered, M-orthonormal
   std::vector<std::string> kinds;    ///< "normal" / "static:<case>"
-  Eigen::MatrixXd reduced_stiffness; ///< basis^T K basis
+  Eigen::MatrixXd reduced_stiffness; ///< basis^T K basis, diagonal
   std::vector<double> eigenvalues;   ///< of the normal modes, omega^2
 
 private:
@@ -39,6 +42,7 @@ private:
   void compute_static_modes(ReductionTimings& timings);
   void orthonormalise_and_fix_signs();
   void compute_reduced_stiffness();
+  void rotate_static_modes_to_ritz_vectors();
 
   Eigen::VectorXd apply_mass(const Eigen::VectorXd& v) const; ///< (Ms (x) I) v, nodal
 

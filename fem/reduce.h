@@ -1,8 +1,8 @@
 #pragma once
-// The fem layer's entry points for apps/ and bench/ (no deal.II in this header):
-// reduce a mesh to a floating-frame body, and compare a body against the full FE model.
-// Both are collective over MPI_COMM_WORLD (call after MPI/PETSc initialisation, e.g.
-// dealii::Utilities::MPI::MPI_InitFinalize) and return the same result on every process.
+// The fem layer's entry point for apps/ and bench/ (no deal.II in this header): reduce a
+// mesh to a floating-frame body. Collective over MPI_COMM_WORLD (call after MPI/PETSc
+// initialisation, e.g. dealii::Utilities::MPI::MPI_InitFinalize); every process gets the
+// same result. The full-FE reference for `compare` is fem/full_response.h.
 
 #include "common/reduced_body_file.h"
 #include "fem/material.h"
@@ -21,7 +21,8 @@ struct ReductionSettings
   unsigned int n_modes = 10;             ///< elastic normal modes (rigid modes never counted)
   std::vector<std::string> static_modes; ///< load cases, e.g. "pressure:skin", "force:tip:0,-1"
   std::string vtu_file;                  ///< mode shapes for ParaView; empty: none
-  std::string export_directory;          ///< M.mtx, K.mtx, dof_nodes.csv; empty: none
+  std::string export_directory;          ///< M and K (docs/export_matrices.md); empty: none
+  std::string export_format = "mtx";     ///< mtx: M.mtx, K.mtx, dof_nodes.csv; hdf5: matrices.h5
 };
 
 struct ReductionTimings
@@ -34,28 +35,4 @@ struct ReductionTimings
 /// The whole reduction: mesh -> K, M -> normal and static modes -> mass-orthonormal basis
 /// -> inertia invariants. Throws InputError for bad input.
 ReducedBodyData reduce_body(const ReductionSettings& settings, ReductionTimings* timings = nullptr);
-
-struct CompareSettings
-{
-  std::string mesh_file, body_file;
-  std::string load;     ///< force:GROUP:fx,fy[,fz]
-  double duration = 0;  ///< s; 0: five periods of the first mode
-  double time_step = 0; ///< s; 0: 1/40 of the first period
-};
-
-struct CompareResult
-{
-  std::string group;
-  Eigen::VectorXd static_full, static_reduced; ///< centroid displacement of the group
-  double static_rel_error = 0;
-  std::vector<double> time;
-  Eigen::MatrixXd transient_full, transient_reduced; ///< (steps + 1) x dim
-  double transient_rel_error = 0;                    ///< max_t |u_r - u_f| / max_t |u_f|
-  double full_seconds = 0, reduced_seconds = 0;
-  std::string reduced_integrator; ///< which reduced model ran
-};
-
-/// Static and transient (step load, Newmark average acceleration) response of the full FE
-/// model against the reduced body. The body must be clamped and made from this mesh.
-CompareResult compare_with_full(const CompareSettings& settings);
 } // namespace chipflex::fem

@@ -98,10 +98,21 @@ FloatingFrameBody<dim>::FloatingFrameBody(const ReducedBodyData& data,
     d_red_ = options.rayleigh_mass * m_red_ + options.rayleigh_stiffness * k_red_;
     break;
   case DampingKind::modal:
-    d_red_ = Eigen::MatrixXd::Zero(m, m);
-    for (int k = 0; k < m; ++k)
-      d_red_(k, k) = 2 * options.modal_damping_ratio * std::sqrt(k_red_(k, k) * m_red_(k, k));
+  {
+    // D = M Y diag(2 zeta omega_k) Y^T M with K Y = M Y Omega^2, Y^T M Y = 1: zeta in every
+    // mode of the reduced pair. chipflex reduce writes K_red diagonal and M_red = 1 (then D
+    // is diag(2 zeta omega_k)); a file whose static block is full (written before the
+    // static modes were rotated to Ritz vectors) still gets zeta in its true modes rather
+    // than on the diagonal's Rayleigh quotients.
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(k_red_, m_red_);
+    if (modes.info() != Eigen::Success)
+      throw InputError(where, "reduced mass and stiffness: no modal decomposition");
+    const Eigen::VectorXd omega = modes.eigenvalues().cwiseMax(0).cwiseSqrt();
+    const Eigen::MatrixXd my = m_red_ * modes.eigenvectors();
+    d_red_ = my * (2 * options.modal_damping_ratio * omega).asDiagonal() * my.transpose();
+    d_red_ = 0.5 * (d_red_ + d_red_.transpose()).eval();
     break;
+  }
   }
 
   q_ = Eigen::VectorXd::Zero(m);

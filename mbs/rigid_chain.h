@@ -1,5 +1,6 @@
 #pragma once
-// The seed paper's rigid-chain models of the elastic gate (DESIGN.md, Table 2): n equal
+// The seed paper's rigid-chain models of the elastic gate (docs/elastic_gate.md, Table 2:
+// 1, 2 or 3 links, spring rates 3.95, 3.95, 2.633 Nm per metre of depth): n equal
 // rectangular rubber links hanging from a clamp, joined by revolute joints with linear
 // torsion springs (the first one between the clamp and link 0). Planar, per metre depth.
 

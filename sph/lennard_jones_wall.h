@@ -1,5 +1,5 @@
 #pragma once
-// The seed paper's modified Lennard-Jones wall (DESIGN.md), per unit particle mass:
+// The seed paper's modified Lennard-Jones wall (docs/sph.md, Walls), per unit particle mass:
 //   F(d) = k ((R-d)^4 - (R-r0)^2 (R-d)^2) / (R^2 r0 (2R - r0))  for 0 <= d <= R,
 // F(0) = k, F(r0) = 0, slightly attractive between r0 and R, zero beyond. It acts along
 // the face normal on fluid particles whose foot point lies on the face; a particle that

@@ -1,6 +1,6 @@
 #pragma once
 // A 2D strip (beam) of SPH solid particles clamped at one end, with the skin the fluid
-// sees: the seed paper's SPH gate (Table 1 of DESIGN.md: six particle layers across
+// sees: the seed paper's SPH gate (Table 1 in docs/elastic_gate.md: six particle layers across
 // the thickness, a clamp of 8 x 4 fixed particles).
 //
 // Why a skin: the fluid never interacts with solid particles directly; it feels a

@@ -15,7 +15,7 @@ namespace chipflex::sph
 {
 enum class WallModel
 {
-  lennard_jones,  ///< the seed paper's modified Lennard-Jones force (DESIGN.md)
+  lennard_jones,  ///< the seed paper's modified Lennard-Jones force (docs/sph.md)
   dummy_particles ///< layers of dummy particles that move with the surface
 };
 

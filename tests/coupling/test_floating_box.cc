@@ -19,8 +19,10 @@
 // and 24.43 mm at dp = 2 mm (+1.8 %): the excess halves with dp, an O(dp) offset of the
 // fluid's edge at a Lennard-Jones skin (we attribute it to the first particle layer
 // sitting closer than the r0 = dp/2 its volume needs; not measured apart). So the 2 %
-// check runs on the dummy-particle skin, and the Lennard-Jones skin is held to its
-// measured first-order offset (5 % at 4 mm), both at dp = 4 mm (~40 s each).
+// check runs on the dummy-particle skin, and the Lennard-Jones skin is held to a band of
+// 5 % either way around Archimedes (re-measured: 24.73 to 24.80 mm, +3.1 to +3.3 %): a fix
+// of that offset passes, a lost or doubled buoyancy (a factor of two in the draft) fails.
+// Both at dp = 4 mm (~40 s each).
 
 #include "coupling/body_factory.h"
 #include "coupling/co_simulation.h"
@@ -105,6 +107,5 @@ TEST_CASE("a floating box with a Lennard-Jones skin: draft within its O(dp) offs
 {
   const Draft d = floating_draft(sph::WallModel::lennard_jones, 0.004);
   CHECK(d.mean == Approx(d.expected).epsilon(0.05));
-  CHECK(d.mean > d.expected); // the offset's measured sign: deeper, never shallower
   CHECK(d.drift < 0.02);
 }

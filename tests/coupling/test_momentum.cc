@@ -1,10 +1,10 @@
-// Conservation of momentum through the coupling (DESIGN.md: "the reaction forces go
-// back to the skin nodes with the weights that distributed them"). Reference: Newton's
-// third law. In a closed box without gravity, a free-floating flexible body (a reduced
-// truss strip, tests/mbs/truss_beam.h, with elastic modes) falls into a moving block of
-// water; the fluid also hits the box. The momentum of fluid + body + the impulse the
-// box walls took up (from the fluid's own reaction report) must stay constant to the
-// fluid's float round-off, while several percent of it is exchanged.
+// Conservation of momentum through the coupling (docs/coupling.md, "Weights": the
+// reaction forces go back to the skin nodes with the weights that distributed them).
+// Reference: Newton's third law. In a closed box without gravity, a free-floating flexible
+// body (a reduced truss strip, tests/mbs/truss_beam.h, with elastic modes) falls into a
+// moving block of water; the fluid also hits the box. The momentum of fluid + body + the impulse
+// the box walls took up (from the fluid's own reaction report) must stay constant to the fluid's
+// float round-off, while several percent of it is exchanged.
 //
 // Exactly so when the body turns a load held over a step into exactly that impulse:
 // the symplectic-Euler body step does (frame at the centre of mass, modes

@@ -11,6 +11,11 @@
 // the small static deflection (26 % high) and in the large one (25 % beyond the
 // elastica), likely because kernels cut off at the two free surfaces carry less bending
 // stress. This is the seed's model, kept as specified (docs/coupling.md).
+//
+// The checks are two-sided bands around the continuum values, not "softer than": the
+// measured offset is a discretisation error of the SPH solid at six layers, not physics, so
+// a fix that brings the strip closer to beam theory must still pass, while a model off by a
+// factor of two, plane stress (19 % softer again) or a wrong shear modulus must fail.
 
 #include "coupling/sph_solid_body.h"
 
@@ -129,13 +134,13 @@ TEST_CASE("SPH solid gate: stiffness in frequency and statics against Euler-Bern
   const double w_sph = sum / n, f_sph = 1 / period;
   INFO("frequency: SPH " << f_sph << " Hz, beam " << f_beam << " Hz; tip deflection: SPH "
                          << w_sph * 1e3 << " mm, beam " << w_beam * 1e3 << " mm");
-  // Measured: 13.53 Hz against 14.75 Hz, 0.248 mm against 0.196 mm. Softer than the
-  // continuum, but within 12 % in frequency and 35 % in deflection (plane stress, 19 %
-  // softer again, or a wrong shear modulus would be outside).
-  CHECK(f_sph < f_beam);
-  CHECK(f_sph > 0.88 * f_beam);
-  CHECK(w_sph > w_beam);
-  CHECK(w_sph < 1.35 * w_beam);
+  // Measured: 13.53 Hz against 14.75 Hz (-8.3 %), 0.248 mm against 0.196 mm (+26 %): the
+  // SPH strip's softness at Table 1's six layers (kernel support cut off at the two free
+  // surfaces, docs/coupling.md; cause not verified). Bands: 12 % in frequency, 35 % in
+  // deflection either way; plane stress (-8 % in frequency, +19 % in deflection again)
+  // falls outside, as does a factor of two.
+  CHECK(f_sph == Approx(f_beam).epsilon(0.12));
+  CHECK(w_sph == Approx(w_beam).epsilon(0.35));
   // One softness behind both: the static compliance ratio is about the squared frequency
   // ratio, as for a linear structure whose static shape is almost its first mode
   // (measured 1.26 against 1.19).
@@ -174,9 +179,10 @@ TEST_CASE("SPH solid gate: large deflection under a tip load against the elastic
   back /= n;
   INFO("tip / L: across " << across << " (elastica 0.4935), back " << back << " (elastica 0.1606)");
   // Measured: 0.616 across, 25 % beyond the elastica, as at small loads (the test
-  // above; 0.623 with a three-period ramp and a four-period mean), and 0.252 back.
-  CHECK(across > 0.4935);
-  CHECK(across < 1.35 * 0.4935);
-  CHECK(back > 0.1606);
-  CHECK(back < 1.8 * 0.1606);
+  // above: the same six-layer softness; 0.623 with a three-period ramp and a four-period
+  // mean), and 0.252 back (+57 %: the shortening grows about as the square of the
+  // deflection). Bands either way: 35 % across, a factor 1.8 back (a factor of two fails).
+  CHECK(across == Approx(0.4935).epsilon(0.35));
+  CHECK(back > 0.1606 / 1.8);
+  CHECK(back < 0.1606 * 1.8);
 }

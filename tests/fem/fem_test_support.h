@@ -1,25 +1,52 @@
 #pragma once
-// Shared by the fem tests: meshes in a scratch folder and a one-call reduction.
+// Shared by the fem tests: meshes in a temporary scratch folder and a one-call reduction.
 
 #include "fem/reduce.h"
 #include "meshes/block_mesher.h"
 
 #include <cmath>
-#include <cstdlib>
+#include <filesystem>
+#include <random>
 #include <string>
+#include <system_error>
 #include <unistd.h>
 
 namespace chipflex::fem::testing
 {
+/// A folder of this test process's own under the system's temporary directory, removed when
+/// the process ends: tests write neither into the source tree nor into whatever directory
+/// they were started from (a run from the repository root once left a scratch folder there).
+class ScratchFolder
+{
+public:
+  ScratchFolder()
+  {
+    const auto base = std::filesystem::temp_directory_path();
+    std::random_device random;
+    for (;;) // a fresh name: pid and a random tag, so concurrent runs never share one
+    {
+      path = base / ("chipflex_fem_test_" + std::to_string(::getpid()) + "_" +
+                     std::to_string(random() % 1000000));
+      if (std::filesystem::create_directory(path))
+        break;
+    }
+  }
+  ~ScratchFolder()
+  {
+    std::error_code ignored; // nothing to do about a folder that cannot be removed at exit
+    std::filesystem::remove_all(path, ignored);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+
+  std::filesystem::path path;
+};
+
+/// `name` inside this process's scratch folder.
 inline std::string scratch(const std::string& name)
 {
-  static const std::string folder = []
-  {
-    std::string d = "fem_test_scratch_" + std::to_string(::getpid());
-    std::system(("mkdir -p " + d).c_str());
-    return d;
-  }();
-  return folder + "/" + name;
+  static const ScratchFolder folder;
+  return (folder.path / name).string();
 }
 
 /// The Antoci gate (2D, x = thickness, y = length, clamp at the top) or its 3D plate.

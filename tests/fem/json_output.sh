@@ -22,6 +22,12 @@ for key in dim mass center_of_mass inertia frequencies_hz mode_kinds n_nodes n_s
   grep -q "\"$key\"" "$dir/info.json" || fail "info --json lacks \"$key\": $(cat "$dir/info.json")"
 done
 grep -q '"dim": *2' "$dir/info.json" || fail "dim is not 2"
+# Numbers are the shortest decimals that read back to the same double: the default
+# nu = 0.4 and E = 1.2e7 print as such, not as 0.40000000000000002.
+grep -q '"poisson_ratio": 0.4,' "$dir/info.json" ||
+  fail "poisson_ratio not printed as 0.4: $(grep poisson_ratio "$dir/info.json")"
+grep -q '"youngs_modulus": 1.2e+07,' "$dir/info.json" ||
+  fail "youngs_modulus not printed as 1.2e+07: $(grep youngs_modulus "$dir/info.json")"
 # Mass per metre of the Antoci gate: 1100 kg/m^3 * 0.005 m * 0.079 m = 0.4345 kg/m.
 mass=$(sed -n 's/.*"mass": *\([0-9.eE+-]*\).*/\1/p' "$dir/info.json")
 awk -v m="$mass" 'BEGIN { exit !(m > 0.43445 && m < 0.43455) }' || fail "mass $mass, expected 0.4345"

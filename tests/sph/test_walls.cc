@@ -1,4 +1,4 @@
-// Lennard-Jones wall: the force law of DESIGN.md (F(0) = k, F(r0) = 0, F(R) = 0,
+// Lennard-Jones wall: the force law of docs/sph.md (F(0) = k, F(r0) = 0, F(R) = 0,
 // attractive between r0 and R), its derived defaults, and a settled water column held
 // only by Lennard-Jones walls: the wall row rests at about r0, no particle penetrates.
 
