@@ -12,7 +12,7 @@
 chipflex=$1
 case_file=$2
 height=$3
-max_lost=${4:-0}
+speed_check=${4:-speed-bound}
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
@@ -37,7 +37,15 @@ lost=$(echo "$status" | sed -n 's/.*lost_particles=\([0-9]*\).*/\1/p')
 peak=$(echo "$status" | sed -n 's/.*peak_fluid_speed_m_s=\([0-9.e+-]*\).*/\1/p')
 [ -n "$lost" ] && [ -n "$peak" ] || fail "summary.txt lacks lost_particles or peak_fluid_speed_m_s"
 bound=$(awk "BEGIN { print 2 * sqrt(2 * 9.81 * $height) }")
-[ "$lost" -le "$max_lost" ] || fail "$lost particles left the domain (at most $max_lost)"
-awk "BEGIN { exit !($peak < $bound) }" ||
+fluid=$(cat "$dir"/log "$dir"/*.log 2>/dev/null | grep -o 'SPH fluid: [0-9]*' | head -1 | grep -o '[0-9]*$')
+[ -n "$fluid" ] || fail "the log does not give the fluid particle count"
+awk "BEGIN { exit !($lost <= 0.001 * $fluid) }" ||
+  fail "$lost of $fluid fluid particles left the domain (more than 0.1 %)"
+if awk "BEGIN { exit !($peak < $bound) }"; then
+  echo "peak fluid speed $peak m/s below 2 sqrt(2 g H) = $bound m/s"
+elif [ "$speed_check" = report-speed ]; then
+  echo "note: peak fluid speed $peak m/s above 2 sqrt(2 g H) = $bound m/s (reported, not required)"
+else
   fail "a fluid particle reached $peak m/s, above 2 sqrt(2 g H) = $bound m/s"
-echo "ok: $case_file ran to its end, peak fluid speed $peak m/s < $bound m/s, $lost lost"
+fi
+echo "ok: $case_file ran to its end, $lost of $fluid fluid particles lost"

@@ -130,8 +130,11 @@ void check_equations_of_motion(int n_cells, int n_modes)
   Eigen::VectorXd fb(nv);
   body.forces(g, fb);
   fb.tail(m) += beam.body.stiffness_matrix.topLeftCorner(m, m) * q; // elastic part is not nodal
+  // Round-off only: a wrong term is off by O(1). The force check allows 1e-10 because
+  // the nodal sums and the invariants add the large gravity and quadratic-velocity terms in
+  // other orders (with AVX-512 FMA the 3D case differs by 2.4e-11 relative).
   CHECK((mm - m_ref).norm() <= 1e-11 * m_ref.norm());
-  CHECK((fb - f_ref).norm() <= 1e-11 * f_ref.norm());
+  CHECK((fb - f_ref).norm() <= 1e-10 * f_ref.norm());
   // kinetic energy and momenta against the nodal sums
   double t_ref = 0;
   V p_ref = V::Zero();
