@@ -40,10 +40,11 @@ void declare_keys(ParameterHandler& prm)
                     Selection("none|molteni colagrossi|fourtakas"),
                     "Delta-SPH term: none, molteni colagrossi (2009), fourtakas (2019).");
   prm.declare_entry("density diffusion delta", "0.1", Double(0), "delta, -.");
-  prm.declare_entry("spray tension", "cut", Selection("cut|keep"),
+  prm.declare_entry("spray tension", "keep", Selection("cut|keep"),
                     "cut: spray (a fluid particle whose kernel support is less than half "
                     "filled) holds no tension, p = max(p, 0), so detached particle pairs do "
-                    "not bind and fly apart; keep: the plain Tait law everywhere (as "
+                    "not bind and fly apart (experimental: it breaks momentum conservation "
+                    "in a closed box, docs/sph.md); keep: the plain Tait law everywhere (as "
                     "DualSPHysics).");
   prm.declare_entry("hydrostatic start", "true", Bool(),
                     "Start each fluid block with its hydrostatic density (no initial wave).");

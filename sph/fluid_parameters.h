@@ -68,7 +68,9 @@ struct FluidParameters
   /// detached pair of particles below rho0 attracts, binds, orbits (its density
   /// drifting) and flies apart at several times c0. The fluid proper keeps its tension:
   /// cut there too, stretched water under a jet thins to a tenth of rho0 and blows up.
-  bool cut_spray_tension = true;
+  /// Off by default: with it the closed-box momentum test (tests/sph/test_conservation.cc)
+  /// misses fluid momentum plus wall impulse by 0.8 %, cause not found yet.
+  bool cut_spray_tension = false;
   TimeScheme scheme = TimeScheme::verlet;
   int verlet_euler_every = 40;
   double cfl = 0.2;
