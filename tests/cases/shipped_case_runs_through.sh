@@ -13,6 +13,7 @@ chipflex=$1
 case_file=$2
 height=$3
 speed_check=${4:-speed-bound}
+lost_fraction=${5:-0.001}
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
@@ -39,8 +40,8 @@ peak=$(echo "$status" | sed -n 's/.*peak_fluid_speed_m_s=\([0-9.e+-]*\).*/\1/p')
 bound=$(awk "BEGIN { print 2 * sqrt(2 * 9.81 * $height) }")
 fluid=$(cat "$dir"/log "$dir"/*.log 2>/dev/null | grep -o 'SPH fluid: [0-9]*' | head -1 | grep -o '[0-9]*$')
 [ -n "$fluid" ] || fail "the log does not give the fluid particle count"
-awk "BEGIN { exit !($lost <= 0.001 * $fluid) }" ||
-  fail "$lost of $fluid fluid particles left the domain (more than 0.1 %)"
+awk "BEGIN { exit !($lost <= $lost_fraction * $fluid) }" ||
+  fail "$lost of $fluid fluid particles left the domain (more than $lost_fraction of them)"
 if awk "BEGIN { exit !($peak < $bound) }"; then
   echo "peak fluid speed $peak m/s below 2 sqrt(2 g H) = $bound m/s"
 elif [ "$speed_check" = report-speed ]; then
