@@ -43,8 +43,8 @@ void declare_keys(ParameterHandler& prm)
   prm.declare_entry("spray tension", "keep", Selection("cut|keep"),
                     "cut: spray (a fluid particle whose kernel support is less than half "
                     "filled) holds no tension, p = max(p, 0), so detached particle pairs do "
-                    "not bind and fly apart (experimental: it breaks momentum conservation "
-                    "in a closed box, docs/sph.md); keep: the plain Tait law everywhere (as "
+                    "not bind and fly apart (experimental: fluid in a corner of Lennard-Jones "
+                    "walls counts as spray, docs/sph.md); keep: the plain Tait law everywhere (as "
                     "DualSPHysics).");
   prm.declare_entry("hydrostatic start", "true", Bool(),
                     "Start each fluid block with its hydrostatic density (no initial wave).");

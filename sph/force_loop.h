@@ -14,7 +14,7 @@
 // Every particle also counts the particles in its kernel support (itself included),
 // relative to a full lattice support: the filling, 1 inside the fluid or at a wall, 0.6
 // on a flat free surface, 2/21 for a pair however close (2D, h = sqrt(2) dp). It tells
-// spray from fluid (FluidSolver cuts the tension of spray).
+// spray from fluid; counted only where the spray treatment is on (count_fill).
 
 #include "sph/density_diffusion.h"
 #include "sph/neighbour_grid.h"
@@ -48,7 +48,7 @@ struct ForcePassInput
 
 namespace detail
 {
-template <int dim, bool neighbour_is_fluid, class Viscosity, class Diffusion>
+template <int dim, bool neighbour_is_fluid, bool count_fill, class Viscosity, class Diffusion>
 inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
                    std::uint32_t jb, std::uint32_t je, const double (&xi)[3], const float (&vi)[3],
                    float rhoi, float pti, float mj, float (&acc)[5], float& dot_rr2_max)
@@ -77,7 +77,8 @@ inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const D
     const float t = std::max(0.0f, 1.0f - 0.5f * inv_h * std::sqrt(r2));
     const float t3 = t * t * t;
     const float fac = kf * t3;
-    aw += t > 0.0f ? 1.0f : 0.0f; // a select, not a branch
+    if constexpr (count_fill)
+      aw += t > 0.0f ? 1.0f : 0.0f; // a select, not a branch
     const float dv0 = vi0 - v0[j];
     const float dv1 = vi1 - v1[j];
     const float dv2 = dim == 3 ? vi2 - v2[j] : 0.0f;
@@ -130,7 +131,7 @@ inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const D
 /// Gathers for particles [first, last); call inside a parallel region (orphaned `omp
 /// for`). Dynamic chunks: each particle's sums do not depend on which thread computes
 /// them, and a thread descheduled on a busy machine does not hold the others up.
-template <int dim, bool target_is_fluid, class Viscosity, class Diffusion>
+template <int dim, bool target_is_fluid, bool count_fill, class Viscosity, class Diffusion>
 float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
                     std::size_t first, std::size_t last)
 {
@@ -146,16 +147,18 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
     for (int r = 0; r < NeighbourGrid<dim>::n_rows; ++r)
     {
       const std::int64_t base = c + in.rows[r];
-      gather<dim, true>(in, visc, diff, in.fluid_start[base], in.fluid_start[base + 3], xi, vi,
-                        rhoi, pti, in.mass_fluid, acc, vmax);
+      gather<dim, true, count_fill>(in, visc, diff, in.fluid_start[base], in.fluid_start[base + 3],
+                                    xi, vi, rhoi, pti, in.mass_fluid, acc, vmax);
       if constexpr (target_is_fluid)
-        gather<dim, false>(in, visc, diff, in.boundary_start[base], in.boundary_start[base + 3], xi,
-                           vi, rhoi, pti, in.mass_boundary, acc, vmax);
+        gather<dim, false, count_fill>(in, visc, diff, in.boundary_start[base],
+                                       in.boundary_start[base + 3], xi, vi, rhoi, pti,
+                                       in.mass_boundary, acc, vmax);
     }
     for (int d = 0; d < dim; ++d)
       in.a[d][i] = acc[d];
     in.density_rate[i] = acc[3];
-    in.fill[i] = in.fill_factor * acc[4];
+    if constexpr (count_fill)
+      in.fill[i] = in.fill_factor * acc[4];
     dot_rr2_max = std::max(dot_rr2_max, vmax);
   };
   // Boundary results are not read by the fluid loop: no barrier between the two.
@@ -180,15 +183,15 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
 /// reaction per unit mass (no density diffusion, as in DualSPHysics); fluid particles
 /// [n_boundary, n) their accelerations (without gravity and walls) and density rates.
 /// Returns max v_ij.r_ij/(r^2+eta2) over candidate pairs, for the time step.
-template <int dim, class Viscosity, class Diffusion>
+template <int dim, bool count_fill, class Viscosity, class Diffusion>
 float force_pass(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
                  std::size_t n_boundary, std::size_t n)
 {
   float dot_rr2_max = 0;
 #pragma omp parallel if (n > parallel_threshold)
   {
-    detail::particle_loop<dim, false>(in, visc, NoDensityDiffusion{}, 0, n_boundary);
-    const float m = detail::particle_loop<dim, true>(in, visc, diff, n_boundary, n);
+    detail::particle_loop<dim, false, false>(in, visc, NoDensityDiffusion{}, 0, n_boundary);
+    const float m = detail::particle_loop<dim, true, count_fill>(in, visc, diff, n_boundary, n);
 #pragma omp critical(chipflex_sph_force_pass_max)
     dot_rr2_max = std::max(dot_rr2_max, m); // a maximum: order-independent
   }
