@@ -5,6 +5,7 @@
 
 #include "common/input_error.h"
 #include "common/reduced_body_file.h"
+#include "common/wall_clock.h"
 #include "fem/full_response.h"
 #include "mbs/floating_frame_body.h"
 #include "mbs/multibody_system.h"
@@ -17,11 +18,7 @@ namespace chipflex::compare
 {
 namespace
 {
-using clock = std::chrono::steady_clock;
-double seconds_since(clock::time_point t0)
-{
-  return std::chrono::duration<double>(clock::now() - t0).count();
-}
+using clock = WallClock;
 
 /// The reduced body's step response through the simulation's own body model: an
 /// mbs::FloatingFrameBody with its frame clamped to ground (then M_red q'' + K_red q =

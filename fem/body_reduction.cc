@@ -1,6 +1,7 @@
 // reduce_body(): the `chipflex reduce` pipeline, dispatched on the mesh dimension.
 
 #include "common/input_error.h"
+#include "common/wall_clock.h"
 #include "fem/elastic_body.h"
 #include "fem/gmsh_reader.h"
 #include "fem/inertia_invariants.h"
@@ -14,11 +15,7 @@ namespace chipflex::fem
 {
 namespace
 {
-using clock = std::chrono::steady_clock;
-double seconds_since(clock::time_point t0)
-{
-  return std::chrono::duration<double>(clock::now() - t0).count();
-}
+using clock = WallClock;
 
 template <int dim>
 ReducedBodyData reduce(const GmshMeshData& mesh, const ReductionSettings& settings,

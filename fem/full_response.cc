@@ -3,6 +3,7 @@
 #include "fem/full_response.h"
 
 #include "common/input_error.h"
+#include "common/wall_clock.h"
 #include "fem/direct_solver.h"
 #include "fem/elastic_body.h"
 #include "fem/gmsh_reader.h"
@@ -15,11 +16,7 @@ namespace chipflex::fem
 {
 namespace
 {
-using clock = std::chrono::steady_clock;
-double seconds_since(clock::time_point t0)
-{
-  return std::chrono::duration<double>(clock::now() - t0).count();
-}
+using clock = WallClock;
 
 /// Newmark's average-acceleration rule (gamma = 1/2, beta = 1/4): unconditionally stable,
 /// no numerical damping. With a0 = 4/dt^2, a1 = 4/dt:

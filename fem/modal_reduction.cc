@@ -1,6 +1,7 @@
 #include "fem/modal_reduction.h"
 
 #include "common/input_error.h"
+#include "common/wall_clock.h"
 #include "fem/direct_solver.h"
 #include "fem/eigen_solver.h"
 
@@ -13,10 +14,6 @@ namespace chipflex::fem
 {
 namespace
 {
-double seconds_since(std::chrono::steady_clock::time_point t0)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 /// sum_i A_ii / sum_i B_ii: a typical eigenvalue, used to scale shifts.
 double diagonal_ratio(const PETScWrappers::MPI::SparseMatrix& a,
