@@ -15,6 +15,8 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <sstream>
+#include <string>
 
 namespace chipflex::bench
 {
@@ -142,9 +144,23 @@ double time_steps(long steps, Step step)
   return std::chrono::duration<double, std::micro>(t1 - t0).count() / steps;
 }
 
+/// The body's state after the timed steps, so that the figure can be cross-checked
+/// against another code integrating the same body under the same loads.
+template <int dim>
+std::string final_state(const mbs::FloatingFrameBody<dim>& body, double time)
+{
+  const Eigen::VectorXd& q = body.modal_coordinates();
+  std::ostringstream s;
+  s.precision(9);
+  s << "  state at t = " << time << " s: frame at (" << body.position().transpose()
+    << "), |q| = " << q.norm() << ", q_1 = " << (q.size() ? q(0) : 0.0) << ", kinetic "
+    << body.kinetic_energy() << " J, strain " << body.strain_energy() << " J";
+  return s.str();
+}
+
 template <int dim>
 double flexible_body_step(const ReducedBodyData& data, bool clamped, long steps, bool reuse,
-                          double& iterations)
+                          double& iterations, std::string& state)
 {
   using V = Eigen::Matrix<double, dim, 1>;
   mbs::IntegratorOptions opt;
@@ -154,7 +170,9 @@ double flexible_body_step(const ReducedBodyData& data, bool clamped, long steps,
   mbs::FloatingFrameOptions fo;
   fo.damping = mbs::DampingKind::modal;
   fo.modal_damping_ratio = 0.02;
-  const int id = system.add_body(std::make_unique<mbs::FloatingFrameBody<dim>>(data, fo));
+  auto owned = std::make_unique<mbs::FloatingFrameBody<dim>>(data, fo);
+  const auto& flexible = *owned;
+  const int id = system.add_body(std::move(owned));
   auto& body = system.body(id);
   if (clamped)
     body.clamp_to_ground();
@@ -178,6 +196,7 @@ double flexible_body_step(const ReducedBodyData& data, bool clamped, long steps,
                                       total_iterations += system.last_newton_iterations();
                                     });
   iterations = double(total_iterations) / (steps + steps / 10);
+  state = final_state<dim>(flexible, 1e-5 * double(steps + steps / 10));
   return us;
 }
 } // namespace
@@ -201,14 +220,19 @@ int mbs_step_benchmark(const Arguments& args)
               data.dim, data.n_nodes(), data.skin_nodes.size(), data.n_modes());
 
   const bool reuse = !cl.flag("--fresh-matrix");
+  if (!cl.has("--body"))
+    std::printf("(synthetic body: lumped mass and made-up modes; pass --body FILE for a "
+                "reduced body file)\n");
   double it = 0;
   for (bool clamped : {true, false})
   {
-    const double us = data.dim == 3 ? flexible_body_step<3>(data, clamped, steps, reuse, it)
-                                    : flexible_body_step<2>(data, clamped, steps, reuse, it);
+    std::string state;
+    const double us = data.dim == 3 ? flexible_body_step<3>(data, clamped, steps, reuse, it, state)
+                                    : flexible_body_step<2>(data, clamped, steps, reuse, it, state);
     std::printf("flexible body, %-18s %8.2f us/step wall, %8.2f us CPU  (%.2f Newton "
-                "iterations/step)\n",
-                clamped ? "clamped to ground" : "free-floating", us, last_cpu_us, it);
+                "iterations/step)\n%s\n",
+                clamped ? "clamped to ground" : "free-floating", us, last_cpu_us, it,
+                state.c_str());
   }
 
   // skin exchange with the fluid, once per fluid step
