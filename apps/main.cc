@@ -24,6 +24,8 @@ const Subcommand subcommands[] = {
     {"compare", "compare a reduced body against the full FE model",
      chipflex::apps::compare_command},
     {"run", "run an SPH (and coupled body) case", chipflex::apps::run_command},
+    {"simulate", "integrate a reduced body on its own under a load history",
+     chipflex::apps::simulate_command},
     {"bench", "run a benchmark and print its figures", chipflex::apps::bench_command},
     {"plot", "plot gate results against experiment (PNG)", chipflex::apps::plot_command},
 };
