@@ -40,6 +40,10 @@ void declare_keys(ParameterHandler& prm)
                     Selection("none|molteni colagrossi|fourtakas"),
                     "Delta-SPH term: none, molteni colagrossi (2009), fourtakas (2019).");
   prm.declare_entry("density diffusion delta", "0.1", Double(0), "delta, -.");
+  prm.declare_entry("density limits", "", Anything(),
+                    "A fluid particle whose density leaves [min, max] is removed and counted "
+                    "(it has passed into a wall or been torn out of the flow; DualSPHysics' "
+                    "RhopOut), kg/m^3. Empty: 0.7 and 1.3 rho0 (700, 1300 for water).");
   prm.declare_entry("spray tension", "keep", Selection("cut|keep"),
                     "cut: spray (a fluid particle whose kernel support is less than half "
                     "filled) holds no tension, p = max(p, 0), so detached particle pairs do "
@@ -208,6 +212,18 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c)
                                                    : sph::DensityDiffusionModel::molteni_colagrossi;
   f.density_diffusion_delta = prm.get_double("density diffusion delta");
   f.cut_spray_tension = prm.get("spray tension") == "cut";
+  {
+    const std::string text = prm.get("density limits");
+    const auto limits = trim(text).empty() ? std::vector<double>{0.7 * f.reference_density,
+                                                                 1.3 * f.reference_density}
+                                           : numbers("fluid/density limits", text);
+    if (limits.size() != 2 || !(limits[0] >= 0) || !(limits[1] > limits[0]) ||
+        !(limits[0] < f.reference_density && limits[1] > f.reference_density))
+      throw InputError("fluid/density limits",
+                       "'" + prm.get("density limits") + "': two densities min < rho0 < max");
+    f.minimum_density_ratio = limits[0] / f.reference_density;
+    f.maximum_density_ratio = limits[1] / f.reference_density;
+  }
   c.hydrostatic_start = prm.get_bool("hydrostatic start");
   prm.leave_subsection();
 

@@ -8,6 +8,7 @@
 #include "common/atomic_output.h"
 #include "common/input_error.h"
 #include "compare/compare_with_full.h"
+#include "fem/blas_threads.h"
 
 #include <deal.II/base/mpi.h>
 #include <fstream>
@@ -29,9 +30,16 @@ int compare_command(const Arguments& args)
   cl.add_option("--dt", "S", "time step (default: 1/40 of the lowest mode's period)");
   cl.add_flag("--json", "print one JSON object");
   cl.add_option("--output", "CSV", "time histories of both models");
+  cl.add_option("--blas-threads", "N",
+                "OpenBLAS threads per process (more than 1 helps only on an idle machine; "
+                "use mpirun -np N for parallelism)",
+                "1");
   cl.add_alias("-o", "--output");
   if (!cl.parse(args))
     return 0;
+  if (cl.get_int("--blas-threads") < 1)
+    throw InputError("--blas-threads", "must be at least 1");
+  fem::set_blas_threads(int(cl.get_int("--blas-threads")));
   compare::CompareSettings settings;
   settings.mesh_file = cl.get("MESH");
   settings.body_file = cl.get("BODY");

@@ -5,6 +5,7 @@
 #include "apps/commands.h"
 #include "common/input_error.h"
 #include "common/reduced_body_file.h"
+#include "fem/blas_threads.h"
 #include "fem/reduce.h"
 
 #include <deal.II/base/mpi.h>
@@ -72,8 +73,15 @@ int reduce_command(const Arguments& args)
                 "mtx: M.mtx, K.mtx, dof_nodes.csv; hdf5: matrices.h5 (CSR datasets)", "mtx");
   cl.add_option("--vtu", "FILE", "mode shapes for ParaView (.vtu)");
   cl.add_option("--petsc-options", "'OPTS'", "options for PETSc/SLEPc, e.g. '-log_view'");
+  cl.add_option("--blas-threads", "N",
+                "OpenBLAS threads per process (more than 1 helps only on an idle machine; "
+                "use mpirun -np N for parallelism)",
+                "1");
   if (!cl.parse(args))
     return 0;
+  if (cl.get_int("--blas-threads") < 1)
+    throw InputError("--blas-threads", "must be at least 1");
+  fem::set_blas_threads(int(cl.get_int("--blas-threads")));
 
   fem::ReductionSettings settings;
   settings.mesh_file = cl.get("MESH");
