@@ -84,6 +84,12 @@ struct FluidParameters
   Vector domain_min = Vector::Constant(-1), domain_max = Vector::Constant(1);
   /// The run stops once more than this fraction of the fluid particles has been removed.
   double maximum_lost_fraction = 0.01;
+  /// A fluid particle whose density leaves [minimum, maximum] * rho0 is removed too:
+  /// weakly-compressible water stays within a few per cent of rho0, so such a particle
+  /// has passed into a wall or been torn out of the flow, and its pressure (Tait, c0 = 88
+  /// m/s: 6 MPa at 1.3 rho0) would catapult it and its neighbours. DualSPHysics' RhopOut
+  /// (700 and 1300 kg/m^3 for water).
+  double minimum_density_ratio = 0.7, maximum_density_ratio = 1.3;
 
   double smoothing_length() const
   {

@@ -247,9 +247,13 @@ std::string LostParticle<dim>::describe() const
   s << "t = " << time << " s (step " << step << "): fluid particle " << id << " at (";
   for (int d = 0; d < dim; ++d)
     s << (d ? ", " : "") << position[d];
-  s << ") "
-    << (cause == LossCause::left_domain ? "left the domain box"
-                                        : "has a non-finite position, velocity or density");
+  s << ") ";
+  if (cause == LossCause::left_domain)
+    s << "left the domain box";
+  else if (cause == LossCause::non_finite)
+    s << "has a non-finite position, velocity or density";
+  else
+    s << "has the density " << density << " kg/m^3, outside the density limits";
   return s.str();
 }
 
@@ -265,7 +269,10 @@ void FluidSolver<dim>::remove_lost_particles()
     for (int d = 0; d < dim; ++d)
       finite = finite && std::isfinite(p.velocity[d][i]) && std::isfinite(p.position[d][i]);
     const bool outside = p.cell[i] == NeighbourGrid<dim>::outside;
-    if (finite && !outside)
+    const double rho0 = parameters_.reference_density;
+    const bool density_ok = i < nb || (p.density[i] >= parameters_.minimum_density_ratio * rho0 &&
+                                       p.density[i] <= parameters_.maximum_density_ratio * rho0);
+    if (finite && !outside && density_ok)
       continue;
     if (i < nb) // a wall particle: the walls' motion is wrong, not one splash
       fail(i, finite ? "left the domain box" : "has a non-finite state (the run blew up)");
@@ -275,7 +282,10 @@ void FluidSolver<dim>::remove_lost_particles()
     lost.id = p.id[i];
     for (int d = 0; d < dim; ++d)
       lost.position[d] = p.position[d][i];
-    lost.cause = finite ? LossCause::left_domain : LossCause::non_finite;
+    lost.cause = !finite   ? LossCause::non_finite
+                 : outside ? LossCause::left_domain
+                           : LossCause::density;
+    lost.density = p.density[i];
     lost_.push_back(lost);
     gone.push_back(i);
   }

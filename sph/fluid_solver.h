@@ -33,10 +33,11 @@
 // sequential counting sort; reductions are maxima. Results are bitwise independent of
 // the thread count, and a checkpoint restores a run bitwise.
 //
-// Lost particles: a fluid particle that leaves the domain box or whose state turns
-// non-finite is removed at the next sort (the others keep their order, so a run with
-// removals stays deterministic and restarts bitwise) and recorded in lost_particles().
-// One splash must not end a long run; many lost particles mean the case is wrong.
+// Lost particles: a fluid particle that leaves the domain box, whose state turns
+// non-finite or whose density leaves the density limits is removed at the next sort (the
+// others keep their order, so a run with removals stays deterministic and restarts
+// bitwise) and recorded in lost_particles(). One splash must not end a long run; many
+// lost particles mean the case is wrong.
 //
 // Failure: more than maximum_lost_fraction of the fluid lost, a boundary particle
 // leaving the domain box, a non-finite acceleration or dt below minimum_time_step
@@ -69,7 +70,8 @@ enum class ParticleKind
 enum class LossCause
 {
   left_domain, ///< outside the domain box
-  non_finite   ///< NaN or infinite position, velocity or density
+  non_finite,  ///< NaN or infinite position, velocity or density
+  density      ///< density outside [minimum, maximum]_density_ratio * rho0
 };
 
 /// One removed fluid particle: when, which, where (its last position), why.
@@ -81,6 +83,7 @@ struct LostParticle
   std::uint32_t id = 0;
   Eigen::Matrix<double, dim, 1> position;
   LossCause cause = LossCause::left_domain;
+  double density = 0; ///< its last density, kg/m^3
 
   /// "t = 0.245 s (step 1234): fluid particle 99 at (0.636, 0.384) left the domain box"
   std::string describe() const;

@@ -6,6 +6,8 @@
 #include "common/input_error.h"
 #include "sph/fluid_solver_impl.h"
 
+#include <algorithm>
+
 namespace chipflex::sph
 {
 namespace
@@ -72,13 +74,14 @@ void FluidSolver<dim>::save(Hdf5File& file, const std::string& group) const
   if (nl > 0)
   {
     std::vector<std::int64_t> lost_id(nl), lost_step(nl), lost_cause(nl);
-    std::vector<double> lost_time(nl), lost_x(nl * dim);
+    std::vector<double> lost_time(nl), lost_density(nl), lost_x(nl * dim);
     for (std::size_t k = 0; k < nl; ++k)
     {
       lost_id[k] = lost_[k].id;
       lost_step[k] = lost_[k].step;
       lost_cause[k] = std::int64_t(lost_[k].cause);
       lost_time[k] = lost_[k].time;
+      lost_density[k] = lost_[k].density;
       for (int d = 0; d < dim; ++d)
         lost_x[k * dim + d] = lost_[k].position[d];
     }
@@ -86,6 +89,7 @@ void FluidSolver<dim>::save(Hdf5File& file, const std::string& group) const
     file.write(group + "/lost/step", lost_step, {nl});
     file.write(group + "/lost/cause", lost_cause, {nl});
     file.write(group + "/lost/time", lost_time, {nl});
+    file.write(group + "/lost/density", lost_density, {nl});
     file.write(group + "/lost/position", lost_x, {nl, std::size_t(dim)});
   }
   if (parameters_.scheme == TimeScheme::position_verlet && forces_current_)
@@ -173,16 +177,18 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
       const auto lost_cause = file.read_integers(group + "/lost/cause");
       const auto lost_time = file.read_doubles(group + "/lost/time");
       const auto lost_x = file.read_doubles(group + "/lost/position");
+      const auto lost_density = file.read_doubles(group + "/lost/density");
       if (lost_id.size() != nl || lost_step.size() != nl || lost_cause.size() != nl ||
-          lost_time.size() != nl || lost_x.size() != nl * dim)
+          lost_time.size() != nl || lost_density.size() != nl || lost_x.size() != nl * dim)
         throw InputError(where, "wrong size of the lost-particle log");
       lost_.resize(nl);
       for (std::size_t k = 0; k < nl; ++k)
       {
         lost_[k].id = std::uint32_t(lost_id[k]);
         lost_[k].step = lost_step[k];
-        lost_[k].cause = lost_cause[k] == 0 ? LossCause::left_domain : LossCause::non_finite;
+        lost_[k].cause = LossCause(std::clamp<std::int64_t>(lost_cause[k], 0, 2));
         lost_[k].time = lost_time[k];
+        lost_[k].density = lost_density[k];
         for (int d = 0; d < dim; ++d)
           lost_[k].position[d] = lost_x[k * dim + d];
       }

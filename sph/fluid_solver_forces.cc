@@ -77,6 +77,8 @@ void FluidSolver<dim>::sort_and_bin()
   const std::size_t nb = p.n_boundary, n = p.size();
   const std::size_t first = boundary_moved_ ? 0 : nb;
   std::size_t n_bad = 0;
+  const float rho_min = float(parameters_.minimum_density_ratio * parameters_.reference_density);
+  const float rho_max = float(parameters_.maximum_density_ratio * parameters_.reference_density);
 #pragma omp parallel for schedule(static) reduction(+ : n_bad) if (n > light_parallel_threshold)
   for (std::size_t i = first; i < n; ++i)
   {
@@ -85,10 +87,11 @@ void FluidSolver<dim>::sort_and_bin()
       x[d] = p.position[d][i];
     const std::uint32_t c = g.cell_of(x); // outside also for a NaN position
     p.cell[i] = c;
-    bool finite = std::isfinite(p.density[i]);
+    const float rho = p.density[i];
+    bool ok = i < nb || (rho >= rho_min && rho <= rho_max); // false for NaN
     for (int d = 0; d < dim; ++d)
-      finite = finite && std::isfinite(p.velocity[d][i]);
-    n_bad += c == NeighbourGrid<dim>::outside || !finite;
+      ok = ok && std::isfinite(p.velocity[d][i]);
+    n_bad += c == NeighbourGrid<dim>::outside || !ok;
   }
   if (n_bad > 0)
     remove_lost_particles();
