@@ -1,11 +1,15 @@
 #pragma once
-// `subsection bodies` of a `chipflex run` case file: up to four coupled bodies, each in
-// `subsection body N` (N = 1..4) with `kind` = none | rigid | chain | flexible |
-// sph solid. Every key is declared once here with its unit and default; bad values
-// throw InputError naming the body, the key and the value.
+// `subsection bodies` of a `chipflex run` case file: any number of coupled bodies, each
+// in `subsection body N` (N = 1, 2, ...) with a `kind` from the registry
+// (apps/body_kinds/). The keys every body has are declared and read here; each kind
+// declares and reads its own. A key set for a body whose kind does not use it is an
+// error, as is any bad value: InputError naming the case file, the body and the key.
 
-#include "coupling/body_description.h"
+#include "coupling/coupled_body.h"
+#include "sph/case_setup.h"
+#include "sph/wall_surface.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,16 +20,41 @@ class ParameterHandler;
 
 namespace chipflex::apps
 {
-/// What the case says about the coupled run beyond the bodies themselves.
+/// A body built from the case, with how the fluid sees its skin.
+template <int dim>
+struct CaseBody
+{
+  std::string name;
+  std::string kind;
+  std::unique_ptr<coupling::CoupledBody<dim>> body;
+  sph::WallModel wall_model = sph::WallModel::lennard_jones;
+  sph::LennardJonesParameters lennard_jones; ///< zeros: derived from the fluid
+};
+
+/// What the case says about the coupled run.
+template <int dim>
 struct BodyCase
 {
-  std::vector<coupling::BodyDescription> bodies;
-  /// Reference curve for the probe of the first body (time_s, dx_m, dy_m), empty: none.
+  std::vector<CaseBody<dim>> bodies;
+  /// Reference curve (time_s, dx_m, dy_m) for the probe of the first body, empty: none
+  /// (the elastic gate's experiment).
   std::string reference_file;
   double error_window_begin = 0.04, error_window_end = 0.36; ///< s
 };
 
-/// Reads the bodies; relative file names are looked up beside the case file first,
-/// then in the working directory.
-BodyCase read_body_case(dealii::ParameterHandler& prm, const std::string& case_path);
+/// The highest N of a `subsection body N` in the case file's text (0: none), so that
+/// that many body subsections can be declared before parsing.
+int count_body_subsections(const std::string& case_text);
+
+/// Declares `subsection bodies` with `n_bodies` body subsections (at least one).
+void declare_body_keys(dealii::ParameterHandler& prm, int n_bodies);
+
+/// Number of bodies the case declares (`count`, or every body subsection when 0).
+int n_case_bodies(dealii::ParameterHandler& prm);
+
+/// Reads and builds the bodies; relative file names are looked up beside the case file
+/// first, then in the working directory.
+template <int dim>
+BodyCase<dim> read_body_case(dealii::ParameterHandler& prm, const std::string& case_path,
+                             const sph::CaseDescription<dim>& fluid);
 } // namespace chipflex::apps

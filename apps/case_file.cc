@@ -1,8 +1,11 @@
 #include "apps/case_file.h"
 
+#include "apps/body_case_keys.h"
 #include "common/input_error.h"
+#include "meshes/surface_mesh.h"
 
 #include <deal.II/base/parameter_handler.h>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -17,7 +20,7 @@ using dealii::Patterns::Selection;
 
 namespace
 {
-void declare_keys(ParameterHandler& prm)
+void declare_keys(ParameterHandler& prm, int n_bodies)
 {
   prm.declare_entry("dimension", "2", Integer(2, 3), "Space dimension: 2 (per metre depth) or 3.");
   prm.enter_subsection("fluid");
@@ -103,6 +106,12 @@ void declare_keys(ParameterHandler& prm)
   prm.declare_entry("polylines", "", Anything(),
                     "2D only: extra walls 'x1, y1, x2, y2, ...' (m), separated by ';'; the "
                     "fluid side is on the right of the direction of travel.");
+  prm.declare_entry("surfaces", "", Anything(),
+                    "Walls from surface meshes, separated by ';', each 'FILE [group NAME] "
+                    "[flip]': a gmsh .msh (2D: its lines; 3D: its triangles and quads, or the "
+                    "boundary of its elements) or an STL file (3D), m. The fluid lies on the "
+                    "side of the face normals (`flip` reverses them); relative names are looked "
+                    "up beside the case file.");
   prm.declare_entry("wall model", "lennard jones", Selection("dummy particles|lennard jones"),
                     "Model of the extra walls.");
   prm.leave_subsection();
@@ -115,7 +124,7 @@ void declare_keys(ParameterHandler& prm)
                     "Water-height gauges 'name: x, y[, z]' (m; the vertical coordinate is "
                     "ignored), separated by ';' -> h_<name>_m (surface elevation).");
   prm.leave_subsection();
-  declare_body_keys(prm);
+  declare_body_keys(prm, n_bodies);
 }
 
 std::string trim(const std::string& s)
@@ -186,7 +195,7 @@ std::vector<sph::Probe<dim>> probes_of(const std::string& key, const std::string
 }
 
 template <int dim>
-void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c)
+void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string& case_path)
 {
   auto& f = c.fluid;
   prm.enter_subsection("fluid");
@@ -304,6 +313,34 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c)
     }
     c.walls.push_back(w);
   }
+  const auto surfaces = split(prm.get("surfaces"), ';');
+  for (std::size_t k = 0; k < surfaces.size(); ++k)
+  {
+    std::istringstream words(surfaces[k]);
+    std::string file, word, group;
+    bool flip = false;
+    words >> file;
+    while (words >> word)
+      if (word == "flip")
+        flip = true;
+      else if (word == "group" && (words >> group))
+        continue;
+      else
+        throw InputError("geometry/walls/surfaces",
+                         "'" + surfaces[k] + "': expected 'FILE [group NAME] [flip]'");
+    namespace fs = std::filesystem;
+    const fs::path beside = fs::path(case_path).parent_path() / file;
+    if (!fs::path(file).is_absolute() && fs::exists(beside))
+      file = beside.string();
+    const auto mesh = meshes::read_surface_mesh<dim>(file, group, flip);
+    sph::WallSurface<dim> w;
+    w.name = "surface " + std::to_string(k + 1);
+    w.model = prm.get("wall model") == "lennard jones" ? sph::WallModel::lennard_jones
+                                                       : sph::WallModel::dummy_particles;
+    w.vertices = mesh.vertices;
+    w.faces = mesh.faces;
+    c.walls.push_back(w);
+  }
   prm.leave_subsection();
   prm.leave_subsection();
 
@@ -349,7 +386,7 @@ std::string one_line(const std::string& what)
 std::string documented_case_keys()
 {
   ParameterHandler prm;
-  declare_keys(prm);
+  declare_keys(prm, 1);
   std::ostringstream out;
   prm.print_parameters(out, ParameterHandler::OutputStyle::PRM);
   return out.str();
@@ -364,10 +401,12 @@ CaseFile read_case_file(const std::string& path)
   c.path = path;
   c.parameters = std::make_shared<ParameterHandler>();
   auto& prm = *c.parameters;
-  declare_keys(prm);
+  std::stringstream text;
+  text << in.rdbuf();
+  declare_keys(prm, count_body_subsections(text.str()));
   try
   {
-    prm.parse_input(in, path, "", false);
+    prm.parse_input(text, path, "", false);
   }
   catch (const dealii::ExceptionBase& e)
   {
@@ -377,9 +416,9 @@ CaseFile read_case_file(const std::string& path)
   {
     c.dimension = int(prm.get_integer("dimension"));
     if (c.dimension == 2)
-      fill(prm, c.case_2d);
+      fill(prm, c.case_2d, path);
     else
-      fill(prm, c.case_3d);
+      fill(prm, c.case_3d, path);
     c.end_time = c.dimension == 2 ? c.case_2d.end_time : c.case_3d.end_time;
     c.frame_interval = c.dimension == 2 ? c.case_2d.output_interval : c.case_3d.output_interval;
     prm.enter_subsection("output");

@@ -34,7 +34,4 @@ CaseFile read_case_file(const std::string& path);
 
 /// All keys with their documentation and defaults, in ParameterHandler's .prm format.
 std::string documented_case_keys();
-
-/// Declares `subsection bodies`. Reserved for coupling/: it adds its keys here.
-void declare_body_keys(dealii::ParameterHandler& prm);
 } // namespace chipflex::apps

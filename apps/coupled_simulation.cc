@@ -1,9 +1,12 @@
 #include "apps/coupled_simulation.h"
 
+#include "common/atomic_output.h"
 #include "common/hdf5_file.h"
 #include "common/input_error.h"
-#include "coupling/body_factory.h"
+#include "coupling/displacement_history.h"
 
+#include <Eigen/Geometry>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -14,12 +17,28 @@ namespace
 /// Probe samples closer than this are not stored (the CSV stays ~4000 rows for a
 /// 0.4 s run whatever the particle spacing).
 constexpr double sample_interval = 1e-4; // s
+constexpr const char* axis_name[3] = {"x", "y", "z"};
+
+/// 2D: the angle; 3D: the rotation vector (axis times angle).
+template <int dim>
+std::vector<double> rotation_probe(const Eigen::Matrix<double, dim, dim>& r)
+{
+  if constexpr (dim == 2)
+    return {std::atan2(r(1, 0), r(0, 0))};
+  else
+  {
+    const Eigen::AngleAxisd a(r);
+    const Eigen::Vector3d v = a.angle() * a.axis();
+    return {v[0], v[1], v[2]};
+  }
+}
 } // namespace
 
-CoupledSimulation::CoupledSimulation(const sph::CaseDescription<2>& fluid_case,
-                                     const BodyCase& bodies, const std::string& output_directory)
-    : fluid_(fluid_case, output_directory), case_(bodies), skins_(output_directory, "skins"),
-      started_(std::chrono::steady_clock::now())
+template <int dim>
+CoupledSimulation<dim>::CoupledSimulation(const sph::CaseDescription<dim>& fluid_case,
+                                          BodyCase<dim> bodies, const std::string& output_directory)
+    : fluid_(fluid_case, output_directory), case_(std::move(bodies)),
+      skins_(output_directory, "skins"), started_(std::chrono::steady_clock::now())
 {
   // Coupled momentum exchange is exact only with the symplectic fluid schemes (the
   // Verlet step's velocity update spans two steps): refuse the other rather than
@@ -27,50 +46,56 @@ CoupledSimulation::CoupledSimulation(const sph::CaseDescription<2>& fluid_case,
   if (!sph::is_symplectic(fluid_.description().fluid.scheme))
     throw InputError("time, scheme",
                      "a case with bodies needs the symplectic or position verlet scheme");
-  cosim_ = std::make_unique<coupling::CoSimulation<2>>(fluid_.fluid());
-  for (const auto& d : case_.bodies)
+  cosim_ = std::make_unique<coupling::CoSimulation<dim>>(fluid_.fluid());
+  for (auto& b : case_.bodies)
   {
-    bodies_.push_back(coupling::make_coupled_body(d, fluid_.description().fluid.gravity));
-    cosim_->add_body(*bodies_.back(), d.name, d.wall_model, d.lennard_jones, d.expected_pressure);
+    cosim_->add_body(*b.body, b.name, b.wall_model, b.lennard_jones);
     fluid_.exclude_from_wall_output(cosim_->fluid_wall_id(cosim_->n_bodies() - 1));
-    probe_start_.push_back(bodies_.back()->probe_position());
+    probe_start_.push_back(b.body->probe_position());
     reference_skins_.emplace_back();
-    bodies_.back()->skin().skin_positions(reference_skins_.back());
+    b.body->skin().skin_positions(reference_skins_.back());
     histories_.emplace_back();
   }
   record();
 }
 
-void CoupledSimulation::record()
+template <int dim>
+void CoupledSimulation<dim>::record()
 {
   const double t = time();
-  for (std::size_t b = 0; b < bodies_.size(); ++b)
+  for (std::size_t b = 0; b < case_.bodies.size(); ++b)
   {
     auto& h = histories_[b];
-    if (!h.empty() && t - h.time().back() < sample_interval * (1 - 1e-9))
+    if (!h.empty() && t - h.back()[0] < sample_interval * (1 - 1e-9))
       continue;
-    const Eigen::Vector2d u = bodies_[b]->probe_position() - probe_start_[b];
-    h.append(t, u.x(), u.y());
+    const Vector u = case_.bodies[b].body->probe_position() - probe_start_[b];
+    Sample s;
+    s[0] = t;
+    for (int d = 0; d < dim; ++d)
+      s[1 + d] = u[d];
+    h.push_back(s);
   }
 }
 
-void CoupledSimulation::advance()
+template <int dim>
+void CoupledSimulation<dim>::advance()
 {
   cosim_->step();
   record();
 }
 
-ParticleFrame CoupledSimulation::frame() const
+template <int dim>
+ParticleFrame CoupledSimulation<dim>::frame() const
 {
-  std::vector<SurfaceOutput<2>::Surface> skins;
+  std::vector<typename SurfaceOutput<dim>::Surface> skins;
   for (int b = 0; b < cosim_->n_bodies(); ++b)
   {
     const auto& wall = cosim_->skin_wall(b);
     const auto& skin = cosim_->body(b).skin();
-    std::vector<Eigen::Vector2d> x, v;
+    std::vector<Vector> x, v;
     skin.skin_positions(x);
     skin.skin_velocities(v);
-    std::vector<Eigen::Vector2d> u(x.size());
+    std::vector<Vector> u(x.size());
     for (std::size_t i = 0; i < x.size(); ++i)
       u[i] = x[i] - reference_skins_[b][i];
     skins.push_back({wall.surface().name,
@@ -78,47 +103,67 @@ ParticleFrame CoupledSimulation::frame() const
                      wall.surface().faces,
                      {{"displacement", "m", u},
                       {"velocity", "m/s", v},
-                      {"fluid_force", "N/m", wall.delivered()}}});
+                      {"fluid_force", dim == 2 ? "N/m" : "N", wall.delivered()}}});
   }
   skins_.write(time(), skins);
   return fluid_.frame();
 }
 
-std::vector<std::string> CoupledSimulation::probe_columns() const
+template <int dim>
+std::vector<std::string> CoupledSimulation<dim>::probe_columns() const
 {
   auto columns = fluid_.probe_columns();
-  for (const auto& d : case_.bodies)
+  for (const auto& b : case_.bodies)
   {
-    columns.push_back(d.name + "_dx_m");
-    columns.push_back(d.name + "_dy_m");
+    for (int d = 0; d < dim; ++d)
+      columns.push_back(b.name + "_d" + axis_name[d] + "_m");
+    for (int d = 0; d < dim; ++d)
+      columns.push_back(b.name + "_" + axis_name[d] + "_m");
+    if (dim == 2)
+      columns.push_back(b.name + "_angle_rad");
+    else
+      for (int d = 0; d < 3; ++d)
+        columns.push_back(b.name + "_r" + axis_name[d] + "_rad");
+    columns.push_back(b.name + "_deflection_m");
+    for (const auto& [name, value] : b.body->extra_probes())
+      columns.push_back(b.name + "_" + name);
   }
   return columns;
 }
 
-std::vector<double> CoupledSimulation::probe_values() const
+template <int dim>
+std::vector<double> CoupledSimulation<dim>::probe_values() const
 {
   auto values = fluid_.probe_values();
-  for (std::size_t b = 0; b < bodies_.size(); ++b)
+  for (std::size_t b = 0; b < case_.bodies.size(); ++b)
   {
-    const Eigen::Vector2d u = bodies_[b]->probe_position() - probe_start_[b];
-    values.push_back(u.x());
-    values.push_back(u.y());
+    const auto& body = *case_.bodies[b].body;
+    const Vector x = body.probe_position();
+    const Vector u = x - probe_start_[b];
+    values.insert(values.end(), u.data(), u.data() + dim);
+    values.insert(values.end(), x.data(), x.data() + dim);
+    for (double r : rotation_probe<dim>(body.frame_rotation()))
+      values.push_back(r);
+    values.push_back(body.max_deflection());
+    for (const auto& [name, value] : body.extra_probes())
+      values.push_back(value);
   }
   return values;
 }
 
-void CoupledSimulation::save(Hdf5File& file) const
+template <int dim>
+void CoupledSimulation<dim>::save(Hdf5File& file) const
 {
   fluid_.save(file);
   cosim_->save_bodies(file, "/bodies");
   file.ensure_group("/probes");
-  for (std::size_t b = 0; b < bodies_.size(); ++b)
+  for (std::size_t b = 0; b < case_.bodies.size(); ++b)
   {
     const auto& h = histories_[b];
     std::vector<double> rows;
-    for (std::size_t i = 0; i < h.size(); ++i)
-      rows.insert(rows.end(), {h.time()[i], h.dx()[i], h.dy()[i]});
-    file.write("/probes/" + case_.bodies[b].name, rows, {h.size(), 3});
+    for (const auto& s : h)
+      rows.insert(rows.end(), s.begin(), s.end());
+    file.write("/probes/" + case_.bodies[b].name, rows, {h.size(), std::size_t(1 + dim)});
   }
   const double wall =
       restored_wall_seconds_ +
@@ -126,76 +171,108 @@ void CoupledSimulation::save(Hdf5File& file) const
   file.write_attribute("/probes", "wall_seconds", wall);
 }
 
-void CoupledSimulation::load(const Hdf5File& file)
+template <int dim>
+void CoupledSimulation<dim>::load(const Hdf5File& file)
 {
   fluid_.load(file);
   cosim_->load_bodies(file, "/bodies");
-  for (std::size_t b = 0; b < bodies_.size(); ++b)
+  for (std::size_t b = 0; b < case_.bodies.size(); ++b)
   {
     std::vector<std::size_t> shape;
     const auto rows = file.read_doubles("/probes/" + case_.bodies[b].name, &shape);
-    coupling::DisplacementHistory h;
-    for (std::size_t i = 0; i < shape.at(0); ++i)
-      h.append(rows[3 * i], rows[3 * i + 1], rows[3 * i + 2]);
-    histories_[b] = h;
+    if (shape.size() != 2 || shape[1] != std::size_t(1 + dim))
+      throw InputError("/probes/" + case_.bodies[b].name, "not a probe history of this case");
+    histories_[b].clear();
+    for (std::size_t i = 0; i < shape[0]; ++i)
+    {
+      Sample s;
+      std::copy_n(&rows[(1 + dim) * i], 1 + dim, s.begin());
+      histories_[b].push_back(s);
+    }
   }
   skins_.resume(time());
   restored_wall_seconds_ = file.read_double_attribute("/probes", "wall_seconds");
   started_ = std::chrono::steady_clock::now();
 }
 
-std::string CoupledSimulation::summary() const
+template <int dim>
+std::string CoupledSimulation<dim>::summary() const
 {
   std::ostringstream s;
   s << fluid_.summary();
-  for (std::size_t b = 0; b < bodies_.size(); ++b)
-    s << "\nbody '" << case_.bodies[b].name << "': " << bodies_[b]->kind() << ", "
-      << bodies_[b]->skin().n_skin_nodes() << " skin nodes, "
-      << (case_.bodies[b].wall_model == sph::WallModel::lennard_jones ? "Lennard-Jones"
-                                                                      : "dummy-particle")
+  for (const auto& b : case_.bodies)
+    s << "\nbody '" << b.name << "': " << b.body->kind() << ", " << b.body->skin().n_skin_nodes()
+      << " skin nodes, "
+      << (b.wall_model == sph::WallModel::lennard_jones ? "Lennard-Jones" : "dummy-particle")
       << " wall";
   return s.str();
 }
 
-std::string CoupledSimulation::finish(const std::string& output_directory) const
+template <int dim>
+std::string CoupledSimulation<dim>::finish(const std::string& output_directory) const
 {
   const double wall =
       restored_wall_seconds_ +
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
   std::ostringstream line;
   line << std::fixed << std::setprecision(2);
-  for (std::size_t b = 0; b < bodies_.size(); ++b)
+  for (std::size_t b = 0; b < case_.bodies.size(); ++b)
   {
-    const auto& name = case_.bodies[b].name;
-    histories_[b].write_csv(output_directory + "/" + name + "_displacement.csv");
-    line << "summary: body=" << name << " kind=" << bodies_[b]->kind();
+    const auto& body = case_.bodies[b];
+    const auto& h = histories_[b];
+    {
+      const std::string path = output_directory + "/" + body.name + "_displacement.csv";
+      AtomicOutput output(path);
+      {
+        std::ofstream out(output.temporary_path());
+        out << "time_s";
+        for (int d = 0; d < dim; ++d)
+          out << ",d" << axis_name[d] << "_m";
+        out << '\n' << std::setprecision(10);
+        for (const auto& s : h)
+        {
+          out << s[0];
+          for (int d = 0; d < dim; ++d)
+            out << ',' << s[1 + d];
+          out << '\n';
+        }
+        if (!out)
+          throw InputError(path, "write failed");
+      }
+      output.commit();
+    }
+    line << "summary: body=" << body.name << " kind=" << body.body->kind();
     if (b == 0 && !case_.reference_file.empty())
     {
+      coupling::DisplacementHistory planar;
+      for (const auto& s : h)
+        planar.append(s[0], s[1], s[2]);
       const auto reference = coupling::DisplacementHistory::read_csv(case_.reference_file);
       if (time() + 1e-9 >= case_.error_window_end)
       {
         const auto e =
-            histories_[b].rms_error(reference, case_.error_window_begin, case_.error_window_end);
+            planar.rms_error(reference, case_.error_window_begin, case_.error_window_end);
         line << " rms_dx_mm=" << e.rms_dx * 1e3 << " rms_dy_mm=" << e.rms_dy * 1e3
              << " frames=" << e.frames;
       }
       else
         line << " rms=n/a(run ends before " << case_.error_window_end << " s)";
     }
-    const auto& h = histories_[b];
-    double dx_max = 0, dy_max = 0;
-    for (std::size_t i = 0; i < h.size(); ++i)
-    {
-      dx_max = std::max(dx_max, h.dx()[i]);
-      dy_max = std::max(dy_max, h.dy()[i]);
-    }
-    line << " max_dx_mm=" << dx_max * 1e3 << " max_dy_mm=" << dy_max * 1e3;
+    Vector largest = Vector::Zero();
+    for (const auto& s : h)
+      for (int d = 0; d < dim; ++d)
+        largest[d] = std::max(largest[d], s[1 + d]);
+    for (int d = 0; d < dim; ++d)
+      line << " max_d" << axis_name[d] << "_mm=" << largest[d] * 1e3;
     line << " dp_mm=" << fluid_.description().fluid.particle_spacing * 1e3
          << " particles=" << cosim_->fluid().n_particles()
          << " lost_particles=" << n_lost_particles()
          << " peak_fluid_speed_m_s=" << peak_fluid_speed() << " steps=" << step_count()
-         << " wall_s=" << wall << (b + 1 < bodies_.size() ? "\n" : "");
+         << " wall_s=" << wall << (b + 1 < case_.bodies.size() ? "\n" : "");
   }
   return line.str();
 }
+
+template class CoupledSimulation<2>;
+template class CoupledSimulation<3>;
 } // namespace chipflex::apps

@@ -1,27 +1,31 @@
 #pragma once
-// The SPH fluid plus coupled bodies as a `chipflex run` Simulation (2D). The fluid is
-// the FluidSimulation of the same case; coupling::CoSimulation exchanges skin motion
+// The SPH fluid plus coupled bodies as a `chipflex run` Simulation, 2D or 3D. The fluid
+// is the FluidSimulation of the same case; coupling::CoSimulation exchanges skin motion
 // and skin forces every fluid step. Outputs beside the fluid's: the deformed skins
 // (DIR/skins.xdmf, with every particle frame: displacement from the initial skin,
-// velocity, fluid force), each body's probe displacement (probes.csv columns and
-// DIR/<body>_displacement.csv: time_s, dx_m, dy_m), and a summary line with the RMS error
-// against the case's reference curve and the wall time.
+// velocity, fluid force), per body its probe point's position and displacement, frame
+// rotation, largest elastic deflection and what its kind adds (probes.csv columns
+// <body>_*), DIR/<body>_displacement.csv (time_s, dx_m, dy_m[, dz_m]), and a summary
+// line per body (with the RMS error against the case's reference curve, if any).
 
 #include "apps/body_case_keys.h"
 #include "apps/fluid_simulation.h"
 #include "apps/surface_output.h"
 #include "coupling/co_simulation.h"
-#include "coupling/displacement_history.h"
 
+#include <array>
 #include <chrono>
 #include <memory>
 
 namespace chipflex::apps
 {
+template <int dim>
 class CoupledSimulation : public Simulation
 {
 public:
-  CoupledSimulation(const sph::CaseDescription<2>& fluid_case, const BodyCase& bodies,
+  using Vector = Eigen::Matrix<double, dim, 1>;
+
+  CoupledSimulation(const sph::CaseDescription<dim>& fluid_case, BodyCase<dim> bodies,
                     const std::string& output_directory);
 
   void advance() override;
@@ -46,16 +50,16 @@ public:
   std::string finish(const std::string& output_directory) const override;
 
 private:
+  using Sample = std::array<double, 1 + dim>; ///< time, displacement
   void record();
 
-  FluidSimulation<2> fluid_;
-  BodyCase case_;
-  std::vector<std::unique_ptr<coupling::CoupledBody<2>>> bodies_;
-  std::unique_ptr<coupling::CoSimulation<2>> cosim_;
-  std::vector<Eigen::Vector2d> probe_start_;
-  std::vector<coupling::DisplacementHistory> histories_;
-  std::vector<std::vector<Eigen::Vector2d>> reference_skins_; ///< skin nodes at t = 0
-  mutable SurfaceOutput<2> skins_;
+  FluidSimulation<dim> fluid_;
+  BodyCase<dim> case_;
+  std::unique_ptr<coupling::CoSimulation<dim>> cosim_;
+  std::vector<Vector> probe_start_;
+  std::vector<std::vector<Sample>> histories_;
+  std::vector<std::vector<Vector>> reference_skins_; ///< skin nodes at t = 0
+  mutable SurfaceOutput<dim> skins_;
   std::chrono::steady_clock::time_point started_;
   double restored_wall_seconds_ = 0;
 };

@@ -37,16 +37,14 @@ namespace
 {
 std::unique_ptr<Simulation> make_simulation(const CaseFile& c, const std::string& dir)
 {
-  // A case with `subsection bodies` runs coupled (coupling/, 2D).
-  c.parameters->enter_subsection("bodies");
-  const bool coupled = c.parameters->get_integer("count") > 0;
-  c.parameters->leave_subsection();
-  if (coupled)
+  // A case with bodies in `subsection bodies` runs coupled (coupling/).
+  if (n_case_bodies(*c.parameters) > 0)
   {
-    if (c.dimension != 2)
-      throw InputError(c.path + ": bodies", "coupled bodies are 2D only (dimension = 2)");
-    return std::make_unique<CoupledSimulation>(c.case_2d, read_body_case(*c.parameters, c.path),
-                                               dir);
+    if (c.dimension == 2)
+      return std::make_unique<CoupledSimulation<2>>(
+          c.case_2d, read_body_case<2>(*c.parameters, c.path, c.case_2d), dir);
+    return std::make_unique<CoupledSimulation<3>>(
+        c.case_3d, read_body_case<3>(*c.parameters, c.path, c.case_3d), dir);
   }
   if (c.dimension == 2)
     return std::make_unique<FluidSimulation<2>>(c.case_2d, dir);

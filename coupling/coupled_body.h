@@ -7,6 +7,7 @@
 #include "mbs/skin_body.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace chipflex::coupling
@@ -33,6 +34,18 @@ public:
   /// World position of the body's probe point (the gate's free end: mean of the file's
   /// `tip` node set, the last link's free end, the SPH strip's free-end skin nodes).
   virtual Vector probe_position() const = 0;
+
+  /// Orientation of the body's frame in the world (identity for bodies without one).
+  virtual Eigen::Matrix<double, dim, dim> frame_rotation() const
+  {
+    return Eigen::Matrix<double, dim, dim>::Identity();
+  }
+  /// Largest elastic displacement of a skin node from its place in the moving frame, m
+  /// (0 for rigid bodies).
+  virtual double max_deflection() const { return 0; }
+  /// Further named probe values a kind reports (e.g. a moving wall's force and torque),
+  /// names with their unit as a suffix ("force_x_N").
+  virtual std::vector<std::pair<std::string, double>> extra_probes() const { return {}; }
 
   /// The complete dynamic state for checkpoints; restore(state()) is exact.
   virtual std::vector<double> state() const = 0;

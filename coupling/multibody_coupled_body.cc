@@ -1,5 +1,6 @@
 #include "coupling/multibody_coupled_body.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace chipflex::coupling
@@ -50,6 +51,24 @@ typename MultibodyCoupledBody<dim>::Vector MultibodyCoupledBody<dim>::probe_posi
   if (probe_)
     return probe_(*system_);
   return system_->body(0).position();
+}
+
+template <int dim>
+Eigen::Matrix<double, dim, dim> MultibodyCoupledBody<dim>::frame_rotation() const
+{
+  return system_->body(0).rotation();
+}
+
+template <int dim>
+double MultibodyCoupledBody<dim>::max_deflection() const
+{
+  const auto& body = system_->body(0);
+  if (body.n_modes() == 0)
+    return 0;
+  double largest = 0;
+  for (int node : body.skin_node_ids())
+    largest = std::max(largest, body.node_displacement(node).norm());
+  return largest;
 }
 
 template class MultibodyCoupledBody<2>;

@@ -37,6 +37,9 @@ public:
   Vector linear_momentum() const override;
   /// The probe given at construction; without one, body 0's frame origin.
   Vector probe_position() const override;
+  /// Body 0's frame rotation and the largest elastic skin displacement of body 0.
+  Eigen::Matrix<double, dim, dim> frame_rotation() const override;
+  double max_deflection() const override;
   std::vector<double> state() const override { return system_->save_state(); }
   void restore(const std::vector<double>& state) override { system_->restore_state(state); }
 

@@ -24,8 +24,10 @@
 // of that offset passes, a lost or doubled buoyancy (a factor of two in the draft) fails.
 // Both at dp = 4 mm (~40 s each).
 
-#include "coupling/body_factory.h"
 #include "coupling/co_simulation.h"
+#include "coupling/multibody_coupled_body.h"
+#include "coupling/rigid_shapes.h"
+#include "mbs/rigid_body.h"
 #include "sph/case_setup.h"
 
 #include <catch2/catch.hpp>
@@ -62,18 +64,22 @@ Draft floating_draft(sph::WallModel skin, double dp)
   c.fluid_blocks.push_back({Vector(left, 0), Vector(right, bottom0)});
   auto fluid = sph::build_fluid(c);
 
-  coupling::BodyDescription d;
-  d.name = "box";
-  d.kind = coupling::BodyKind::rigid;
-  d.clamped = false;
-  d.width = box_width;
-  d.height = box_height;
-  d.density = box_density;
-  d.position = Vector(0.5 * (left + right), bottom0 + box_height / 2);
-  auto box = coupling::make_coupled_body(d, c.fluid.gravity);
+  // Skin nodes a quarter of the box height apart, so the fluid's reaction is resolved
+  // along the faces.
+  const auto shape =
+      coupling::box_shape<2>(Vector(box_width, box_height), box_density, box_height / 4);
+  auto system = std::make_unique<mbs::MultibodySystem<2>>(mbs::IntegratorOptions{});
+  system->set_gravity(c.fluid.gravity);
+  auto rigid = mbs::make_rigid_body<2>(mbs::rigid_body_data<2>(
+      shape.mass, shape.centre_of_mass, shape.inertia, shape.nodes, shape.faces));
+  rigid->set_pose(Vector(0.5 * (left + right), bottom0 + box_height / 2), 0.0);
+  auto* skin_body = rigid.get();
+  system->add_body(std::move(rigid));
+  auto box =
+      std::make_unique<coupling::MultibodyCoupledBody<2>>("rigid", std::move(system), *skin_body);
 
   coupling::CoSimulation<2> cosim(*fluid);
-  cosim.add_body(*box, d.name, skin);
+  cosim.add_body(*box, "box", skin);
 
   double sum = 0, weight = 0, lowest = 1, highest = 0, drift = 0;
   while (cosim.time() < 1.6)

@@ -13,8 +13,8 @@
 // body factory, the Lennard-Jones skin, the fluid's reactions mapped through Psi^T.
 
 #include "common/reduced_body_file.h"
-#include "coupling/body_factory.h"
 #include "coupling/co_simulation.h"
+#include "coupling/multibody_coupled_body.h"
 #include "fem_test_support.h"
 #include "mbs/floating_frame_body.h"
 #include "sph/case_setup.h"
@@ -135,18 +135,30 @@ TEST_CASE("a clamped plate under a water column deflects as the FE static soluti
   c.fluid_blocks.push_back({Vector(0, 0), Vector(wall_x, depth)});
   auto fluid = sph::build_fluid(c);
 
-  coupling::BodyDescription d;
-  d.name = "plate";
-  d.kind = coupling::BodyKind::flexible;
-  d.body_file = file;
-  d.position = Vector(wall_x, 0);
-  d.clamped = true;
-  d.modal_damping = 0.7;
-  auto plate = coupling::make_coupled_body(d, c.fluid.gravity);
+  mbs::FloatingFrameOptions options;
+  options.damping = mbs::DampingKind::modal;
+  options.modal_damping_ratio = 0.7;
+  auto system = std::make_unique<mbs::MultibodySystem<2>>(mbs::IntegratorOptions{});
+  system->set_gravity(c.fluid.gravity);
+  auto flexible = std::make_unique<mbs::FloatingFrameBody<2>>(read_reduced_body(file), options);
+  const std::vector<int> tip = flexible->node_set("tip");
+  flexible->set_pose(Vector(wall_x, 0), 0.0);
+  flexible->clamp_to_ground();
+  auto* skin_body = flexible.get();
+  system->add_body(std::move(flexible));
+  auto plate = std::make_unique<coupling::MultibodyCoupledBody<2>>(
+      "flexible", std::move(system), *skin_body, 0,
+      [tip](const mbs::MultibodySystem<2>& s)
+      {
+        Vector sum = Vector::Zero();
+        for (int n : tip)
+          sum += s.body(0).node_position(n);
+        return Vector(sum / double(tip.size()));
+      });
   const Vector tip0 = plate->probe_position();
 
   coupling::CoSimulation<2> cosim(*fluid);
-  cosim.add_body(*plate, d.name, sph::WallModel::lennard_jones);
+  cosim.add_body(*plate, "plate", sph::WallModel::lennard_jones);
   double sum = 0, weight = 0;
   while (cosim.time() < 0.6)
   {

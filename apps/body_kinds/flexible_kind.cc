@@ -1,0 +1,124 @@
+// Body kind `flexible`: a reduced floating-frame body from a body file (`chipflex
+// reduce`), 2D or 3D, free or with its frame clamped to the ground. Optionally (2D,
+// clamped beam-like bodies) a large-rotation skin that rebuilds the beam inextensibly
+// from its rotation field (coupling/large_rotation_beam_skin.h).
+
+#include "apps/body_kinds/body_kind.h"
+#include "common/input_error.h"
+#include "common/reduced_body_file.h"
+#include "coupling/large_rotation_beam_skin.h"
+#include "coupling/multibody_coupled_body.h"
+
+namespace chipflex::apps
+{
+namespace
+{
+class FlexibleKind : public BodyKind
+{
+public:
+  std::string name() const override { return "flexible"; }
+  std::string description() const override { return "flexible (reduced body file)"; }
+
+  void declare(BodyKeyDeclarations& keys) const override
+  {
+    keys.declare("body file", "", "text", "HDF5 body file from `chipflex reduce`.");
+    keys.declare("modes", "-1", "integer >= -1", "First n modes of the file; -1: all.");
+    keys.declare("modal damping", "0", "double >= 0", "Damping ratio of every mode, -.");
+    keys.declare("rayleigh mass", "0", "double >= 0", "Rayleigh alpha, 1/s.");
+    keys.declare("rayleigh stiffness", "0", "double >= 0", "Rayleigh beta, s.");
+    keys.declare("probe set", "tip", "text",
+                 "Node set whose mean is the body's probe point (displacement output).");
+    keys.declare("clamp set", "clamp", "text", "Large rotation: the node set at the clamped end.");
+    keys.declare("large rotation", "false", "bool",
+                 "2D clamped beam: rebuild the skin inextensibly from the linear rotation "
+                 "field, so that large deflections foreshorten the beam.");
+  }
+
+  std::unique_ptr<coupling::CoupledBody<2>> build(const BodyKeys& keys,
+                                                  const BodyContext<2>& context) const override
+  {
+    return make<2>(keys, context);
+  }
+  std::unique_ptr<coupling::CoupledBody<3>> build(const BodyKeys& keys,
+                                                  const BodyContext<3>& context) const override
+  {
+    return make<3>(keys, context);
+  }
+
+private:
+  template <int dim>
+  static std::unique_ptr<coupling::CoupledBody<dim>> make(const BodyKeys& keys,
+                                                          const BodyContext<dim>& context)
+  {
+    using Vector = Eigen::Matrix<double, dim, 1>;
+    const std::string file = keys.file("body file");
+    const ReducedBodyData data = read_reduced_body(file);
+    if (data.dim != dim)
+      throw InputError(file, "a " + std::to_string(data.dim) + "D body file in a " +
+                                 std::to_string(dim) + "D case");
+    const int modes = keys.integer("modes");
+    if (modes == 0 || modes > data.n_modes())
+      throw InputError(keys.at("modes"), "the file has " + std::to_string(data.n_modes()) +
+                                             " modes, asked for " + std::to_string(modes));
+    mbs::FloatingFrameOptions options;
+    options.n_modes = modes;
+    const double zeta = keys.number("modal damping"), alpha = keys.number("rayleigh mass"),
+                 beta = keys.number("rayleigh stiffness");
+    if (zeta > 0 && (alpha > 0 || beta > 0))
+      throw InputError(keys.where() + ", damping",
+                       "give either a modal damping ratio or Rayleigh coefficients, not both");
+    if (zeta > 0)
+    {
+      options.damping = mbs::DampingKind::modal;
+      options.modal_damping_ratio = zeta;
+    }
+    else if (alpha > 0 || beta > 0)
+    {
+      options.damping = mbs::DampingKind::rayleigh;
+      options.rayleigh_mass = alpha;
+      options.rayleigh_stiffness = beta;
+    }
+    auto system = make_body_system(context);
+    auto body = std::make_unique<mbs::FloatingFrameBody<dim>>(data, options);
+    const std::string probe_set = keys.text("probe set");
+    std::vector<int> probe;
+    if (data.node_sets.count(probe_set))
+      probe = body->node_set(probe_set);
+    else if (probe_set != "tip") // the default may be missing: the frame origin then
+      body->node_set(probe_set); // InputError naming the missing set
+    place_body(*body, context.placement);
+    auto* skin = body.get();
+    system->add_body(std::move(body));
+    if (keys.flag("large rotation"))
+    {
+      if constexpr (dim == 2)
+      {
+        if (!context.placement.clamped)
+          throw InputError(keys.at("large rotation"), "needs a clamped body");
+        auto beam = std::make_unique<coupling::LargeRotationBeamSkin>(*skin, keys.text("clamp set"),
+                                                                      probe_set);
+        const coupling::LargeRotationBeamSkin* probe_skin = beam.get();
+        return std::make_unique<coupling::MultibodyCoupledBody<2>>(
+            "flexible", std::move(system), std::move(beam), context.max_step,
+            [probe_skin](const mbs::MultibodySystem<2>&) { return probe_skin->tip_position(); });
+      }
+      else
+        throw InputError(keys.at("large rotation"), "exists for 2D beams only");
+    }
+    return std::make_unique<coupling::MultibodyCoupledBody<dim>>(
+        "flexible", std::move(system), *skin, context.max_step,
+        [probe](const mbs::MultibodySystem<dim>& s)
+        {
+          if (probe.empty())
+            return Vector(s.body(0).position());
+          Vector sum = Vector::Zero();
+          for (int n : probe)
+            sum += s.body(0).node_position(n);
+          return Vector(sum / double(probe.size()));
+        });
+  }
+};
+
+const BodyKindRegistration registration(std::make_unique<FlexibleKind>());
+} // namespace
+} // namespace chipflex::apps
