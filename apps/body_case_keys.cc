@@ -127,37 +127,31 @@ void declare_body_keys(ParameterHandler& prm, int n_bodies)
   prm.leave_subsection();
 }
 
-int n_case_bodies(ParameterHandler& prm)
+int n_case_bodies(ParameterHandler& prm, int declared)
 {
   prm.enter_subsection("bodies");
   int count = int(prm.get_integer("count"));
   if (count == 0)
-    for (int b = 1;; ++b)
+    for (int b = 1; b <= declared; ++b)
     {
-      // Declared subsections beyond the file's are all `kind = none`.
-      try
-      {
-        prm.enter_subsection("body " + std::to_string(b));
-        const bool some = prm.get("kind") != "none";
-        prm.leave_subsection();
-        if (!some)
-          break;
+      prm.enter_subsection("body " + std::to_string(b));
+      if (prm.get("kind") != "none")
         count = b;
-      }
-      catch (...)
-      {
-        break;
-      }
+      prm.leave_subsection();
     }
   prm.leave_subsection();
+  if (count > declared)
+    throw InputError("bodies, count", "count = " + std::to_string(count) +
+                                          " but the highest body subsection is body " +
+                                          std::to_string(declared));
   return count;
 }
 
 template <int dim>
 BodyCase<dim> read_body_case(ParameterHandler& prm, const std::string& case_path,
-                             const sph::CaseDescription<dim>& fluid)
+                             const sph::CaseDescription<dim>& fluid, int declared)
 {
-  const int count = n_case_bodies(prm);
+  const int count = n_case_bodies(prm, declared);
   ParameterHandler scratch;
   const KindKeys kind_keys = declare_kinds(scratch);
   BodyCase<dim> c;
@@ -174,16 +168,7 @@ BodyCase<dim> read_body_case(ParameterHandler& prm, const std::string& case_path
   for (int b = 1; b <= count; ++b)
   {
     const std::string where = case_path + ": bodies, body " + std::to_string(b);
-    try
-    {
-      prm.enter_subsection("body " + std::to_string(b));
-    }
-    catch (...)
-    {
-      throw InputError(case_path + ": bodies", "count = " + std::to_string(count) +
-                                                   " but there is no subsection body " +
-                                                   std::to_string(b));
-    }
+    prm.enter_subsection("body " + std::to_string(b));
     const std::string kind_name = prm.get("kind");
     if (kind_name == "none")
       throw InputError(where + ", kind", "count = " + std::to_string(count) + " but body " +
@@ -260,7 +245,7 @@ BodyCase<dim> read_body_case(ParameterHandler& prm, const std::string& case_path
 }
 
 template BodyCase<2> read_body_case(ParameterHandler&, const std::string&,
-                                    const sph::CaseDescription<2>&);
+                                    const sph::CaseDescription<2>&, int);
 template BodyCase<3> read_body_case(ParameterHandler&, const std::string&,
-                                    const sph::CaseDescription<3>&);
+                                    const sph::CaseDescription<3>&, int);
 } // namespace chipflex::apps

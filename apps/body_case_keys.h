@@ -49,12 +49,13 @@ int count_body_subsections(const std::string& case_text);
 /// Declares `subsection bodies` with `n_bodies` body subsections (at least one).
 void declare_body_keys(dealii::ParameterHandler& prm, int n_bodies);
 
-/// Number of bodies the case declares (`count`, or every body subsection when 0).
-int n_case_bodies(dealii::ParameterHandler& prm);
+/// Number of bodies the case declares (`count`, or up to the last body subsection with
+/// a kind when 0); `declared`: the body subsections declared (count_body_subsections).
+int n_case_bodies(dealii::ParameterHandler& prm, int declared);
 
 /// Reads and builds the bodies; relative file names are looked up beside the case file
 /// first, then in the working directory.
 template <int dim>
 BodyCase<dim> read_body_case(dealii::ParameterHandler& prm, const std::string& case_path,
-                             const sph::CaseDescription<dim>& fluid);
+                             const sph::CaseDescription<dim>& fluid, int declared);
 } // namespace chipflex::apps

@@ -403,7 +403,8 @@ CaseFile read_case_file(const std::string& path)
   auto& prm = *c.parameters;
   std::stringstream text;
   text << in.rdbuf();
-  declare_keys(prm, count_body_subsections(text.str()));
+  c.body_subsections = count_body_subsections(text.str());
+  declare_keys(prm, c.body_subsections);
   try
   {
     prm.parse_input(text, path, "", false);

@@ -26,6 +26,7 @@ struct CaseFile
   double end_time = 1, frame_interval = 0.01, probe_interval = 0.001; ///< s
   sph::CaseDescription<2> case_2d;
   sph::CaseDescription<3> case_3d;
+  int body_subsections = 0; ///< highest N of the file's `subsection body N`
   /// The parsed file (for subsections that other layers read, e.g. bodies).
   std::shared_ptr<dealii::ParameterHandler> parameters;
 };
