@@ -20,6 +20,8 @@ const Benchmark benchmarks[] = {
     {"reduce", "reduce a ~350k-DOF quadratic 3D strip to 20 modes", bench::reduce_benchmark},
     {"sph-dambreak2d", "DualSPHysics CaseDambreakVal2D to t = 0.05 s",
      bench::sph_dambreak2d_benchmark},
+    {"sph-dambreak3d", "DualSPHysics CaseDambreak (3D, with its column) to t = 0.02 s",
+     bench::sph_dambreak3d_benchmark},
     {"mbs", "wall time per implicit step of a 20-mode body and a 3-link chain",
      bench::mbs_step_benchmark},
 };

@@ -13,6 +13,8 @@ using Arguments = std::vector<std::string>;
 int reduce_benchmark(const Arguments& args);
 /// DualSPHysics' CaseDambreakVal2D to t = 0.05 s (bench/sph_dambreak_benchmark.cc).
 int sph_dambreak2d_benchmark(const Arguments& args);
+/// DualSPHysics' CaseDambreak (3D, with its column) to t = 0.02 s (same file).
+int sph_dambreak3d_benchmark(const Arguments& args);
 /// Wall time per implicit step: 20-mode 3D flexible body, 3-link chain
 /// (bench/mbs_step_benchmark.cc).
 int mbs_step_benchmark(const Arguments& args);
