@@ -1,7 +1,7 @@
 #!/bin/sh
 # A free 3D rigid box floats at Archimedes' draft (hydrostatics: buoyancy = weight of the
 # displaced water, so a box of density rho_b and height H_b floats upright with draft
-# d = (rho_b / rho_w) H_b). The case (cases/floating_box_3d.prm beside this script):
+# d = (rho_b / rho_w) H_b). The case (cases/floating_box_3d.prm):
 # a 0.06 x 0.06 x 0.03 m box of 500 kg/m^3, d = 15 mm, dummy-particle skin, in a 3D basin
 # 45 mm deep, started at its draft with the water around it. Checked through the whole
 # `chipflex run` path (case file, body registry, 3D coupling): the mean draft over
@@ -14,7 +14,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
-"$chipflex" run "$here/cases/floating_box_3d.prm" --out "$dir/out" > "$dir/log" 2>&1 ||
+"$chipflex" run "$here/../../cases/floating_box_3d.prm" --out "$dir/out" > "$dir/log" 2>&1 ||
   fail "the run stopped: $(tail -3 "$dir/log")"
 head -1 "$dir/out/summary.txt"
 awk -F, -v level=0.045 -v half=0.015 -v expected=0.015 '
