@@ -1,0 +1,121 @@
+#!/bin/sh
+# Bodies in case files (docs/bodies.md), through `chipflex run`:
+# 1. A 3D case with a rigid sphere dropped into water, a paddle from an STL file turning
+#    as a moving wall and a fixed wall from the same STL: it runs, the sphere falls
+#    (z drops by about g t^2 / 2 in the first 0.03 s, before it meets the water), the
+#    paddle turns by omega t and reports its torque; no fluid particle is thrown about.
+# 2. Bad bodies: each exits with status 2 and one line on stderr naming the case, the
+#    body and the key (or the file) at fault.
+#   usage: bodies_case.sh CHIPFLEX
+chipflex=$1
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+# STL files: a 0.06 x 0.06 m square at z = 0.12 facing down (a fixed wall above the
+# water), and a closed 0.06 x 0.01 x 0.06 m plate centred on the origin (the paddle: a
+# Lennard-Jones wall is one-sided, so a paddle in water needs both faces).
+facet() { echo " facet normal 0 0 0"; echo "  outer loop"
+          echo "   vertex $1"; echo "   vertex $2"; echo "   vertex $3"
+          echo "  endloop"; echo " endfacet"; }
+{ echo "solid square"
+  facet "0.12 0.07 0.12" "0.12 0.13 0.12" "0.18 0.13 0.12"
+  facet "0.12 0.07 0.12" "0.18 0.13 0.12" "0.18 0.07 0.12"
+  echo "endsolid square"; } > "$dir/square.stl"
+{ echo "solid plate"
+  # corner k of the box: x = +-0.03, y = +-0.005, z = +-0.03 by the bits of k
+  c() { x=$(( ($1 & 1) * 2 - 1 )) y=$(( (($1 >> 1) & 1) * 2 - 1 )) z=$(( (($1 >> 2) & 1) * 2 - 1 ))
+        echo "$(awk "BEGIN { print 0.03 * $x, 0.005 * $y, 0.03 * $z }")"; }
+  for q in "0 2 3 1" "4 5 7 6" "0 1 5 4" "2 6 7 3" "0 4 6 2" "1 3 7 5"; do
+    set -- $q
+    facet "$(c $1)" "$(c $2)" "$(c $3)"
+    facet "$(c $1)" "$(c $3)" "$(c $4)"
+  done
+  echo "endsolid plate"; } > "$dir/plate.stl"
+
+cat > "$dir/case.prm" <<'PRM'
+set dimension = 3
+subsection fluid
+  set particle spacing = 0.01
+  set gravity          = 0, 0, -9.81
+end
+subsection time
+  set end time = 0.03
+  set scheme   = symplectic
+end
+subsection output
+  set frame interval = 0.01
+  set probe interval = 0.001
+end
+subsection geometry
+  set fluid blocks = 0, 0, 0, 0.2, 0.2, 0.05
+  subsection tank
+    set min corner = 0, 0, 0
+    set max corner = 0.2, 0.2, 0.2
+  end
+  subsection walls
+    set surfaces = square.stl
+  end
+end
+subsection bodies
+  subsection body 1
+    set name     = sphere
+    set kind     = rigid
+    set shape    = sphere
+    set radius   = 0.02
+    set density  = 800
+    set position = 0.05, 0.1, 0.15
+    set clamped  = false
+  end
+  subsection body 2
+    set name             = paddle
+    set kind             = moving wall
+    set surface          = plate.stl
+    set position         = 0.15, 0.1, 0.1 # above the water: fluid must not start inside a body
+    set angular velocity = 0, 0, 2
+  end
+end
+PRM
+"$chipflex" run "$dir/case.prm" --out "$dir/out" > "$dir/log" 2>&1 || fail "run: $(tail -3 "$dir/log")"
+grep "^summary: body=" "$dir/out/summary.txt"
+peak=$(sed -n 's/.*peak_fluid_speed_m_s=\([0-9.e+-]*\).*/\1/p' "$dir/out/summary.txt" | head -1)
+awk "BEGIN { exit !($peak < 0.5) }" || fail "a fluid particle reached $peak m/s in water at rest"
+[ -f "$dir/out/skins.xdmf" ] || fail "no skins.xdmf"
+awk -F, '
+  NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
+  { t = $1; dz = $col["sphere_dz_m"]; rz = $col["paddle_rz_rad"]; torque = $col["paddle_torque_Nm"] }
+  END { fall = 0.5 * 9.81 * t * t
+        printf "t = %.4f s: sphere dz %.5f m (free fall %.5f m), paddle turned %.4f rad (omega t %.4f), torque %.3g N m\n",
+               t, dz, -fall, rz, 2 * t, torque
+        if (dz > -0.9 * fall || dz < -1.1 * fall) { print "FAIL: the sphere does not fall freely"; exit 1 }
+        if (rz < 0.999 * 2 * t || rz > 1.001 * 2 * t) { print "FAIL: the paddle does not turn at 2 rad/s"; exit 1 } }
+' "$dir/out/probes.csv" || exit 1
+awk -F, 'NR == 1 { exit !(index($0, "paddle_torque_Nm") && index($0, "sphere_rx_rad") && index($0, "sphere_deflection_m")) }' \
+  "$dir/out/probes.csv" || fail "probes.csv lacks the per-body columns"
+
+failures=0
+# bad NAME NEEDLE: replaces the first body by the lines on stdin, expects status 2 and
+# one stderr line containing NEEDLE.
+bad() {
+  name=$1 needle=$2
+  { sed '/subsection bodies/,$d' "$dir/case.prm"; echo "subsection bodies"; echo "  subsection body 1"
+    cat; echo "  end"; echo "end"; } > "$dir/bad.prm"
+  "$chipflex" run "$dir/bad.prm" --out "$dir/bad_out" > /dev/null 2> "$dir/stderr"
+  status=$? lines=$(wc -l < "$dir/stderr")
+  if [ "$status" -ne 2 ] || [ "$lines" -ne 1 ] || ! grep -q -- "$needle" "$dir/stderr"; then
+    echo "FAIL $name: status $status, $lines lines:"; cat "$dir/stderr"; failures=$((failures + 1))
+  else
+    echo "ok   $name: $(cat "$dir/stderr")"
+  fi
+}
+printf '    set kind = rigid\n    set links = 2\n' | bad "key of another kind" "body 1, links: does not apply to a body of kind rigid"
+printf '    set kind = chain\n' | bad "2D-only kind in 3D" "chain kind exists in 2D cases only"
+printf '    set kind = rigid\n    set shape = mesh\n    set mesh = nothing.stl\n' | bad "missing mesh" "nothing.stl"
+printf '    set kind = rigid\n    set shape = mesh\n    set mesh = square.stl\n' | bad "open surface as a rigid body" "not closed"
+printf '    set kind = rigid\n    set size = 0.1, 0.1\n' | bad "box size of a 2D box" "size"
+printf '    set kind = rigid\n    set position = 0.1, 0.1\n' | bad "2D position in 3D" "position"
+printf '    set kind = flexible\n    set body file = none.h5\n' | bad "missing body file" "none.h5"
+printf '    set kind = moving wall\n' | bad "moving wall without a surface" "needs either an outline or a surface"
+printf '    set kind = rigid\n    set density = -5\n' | bad "negative density" "density"
+[ "$failures" -eq 0 ] || exit 1
+echo "ok"
