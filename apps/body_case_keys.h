@@ -29,6 +29,7 @@ struct CaseBody
   std::unique_ptr<coupling::CoupledBody<dim>> body;
   sph::WallModel wall_model = sph::WallModel::lennard_jones;
   sph::LennardJonesParameters lennard_jones; ///< zeros: derived from the fluid
+  std::size_t displaced_fluid = 0;           ///< fluid particles removed from inside it
 };
 
 /// What the case says about the coupled run.

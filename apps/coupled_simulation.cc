@@ -4,6 +4,7 @@
 #include "common/hdf5_file.h"
 #include "common/input_error.h"
 #include "coupling/displacement_history.h"
+#include "coupling/fluid_overlap.h"
 
 #include <Eigen/Geometry>
 #include <fstream>
@@ -46,6 +47,17 @@ CoupledSimulation<dim>::CoupledSimulation(const sph::CaseDescription<dim>& fluid
   if (!sph::is_symplectic(fluid_.description().fluid.scheme))
     throw InputError("time, scheme",
                      "a case with bodies needs the symplectic or position verlet scheme");
+  // Fluid blocks ignore the bodies: drop the particles that start inside a body or
+  // on its skin (closer than 0.4 dp; the lattice's half-spacing gap to a body face
+  // placed on a lattice plane stays).
+  const double dp = fluid_.description().fluid.particle_spacing;
+  for (auto& b : case_.bodies)
+  {
+    std::vector<Vector> x;
+    b.body->skin().skin_positions(x);
+    const coupling::SkinOverlap<dim> overlap(x, b.body->skin().skin_faces(), 0.4 * dp);
+    b.displaced_fluid = fluid_.fluid().remove_fluid_where(overlap);
+  }
   cosim_ = std::make_unique<coupling::CoSimulation<dim>>(fluid_.fluid());
   for (auto& b : case_.bodies)
   {
@@ -204,7 +216,10 @@ std::string CoupledSimulation<dim>::summary() const
     s << "\nbody '" << b.name << "': " << b.body->kind() << ", " << b.body->skin().n_skin_nodes()
       << " skin nodes, "
       << (b.wall_model == sph::WallModel::lennard_jones ? "Lennard-Jones" : "dummy-particle")
-      << " wall";
+      << " wall"
+      << (b.displaced_fluid
+              ? ", " + std::to_string(b.displaced_fluid) + " fluid particles inside it removed"
+              : std::string());
   return s.str();
 }
 

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace chipflex::sph
 {
@@ -255,6 +256,28 @@ std::string LostParticle<dim>::describe() const
   else
     s << "has the density " << density << " kg/m^3, outside the density limits";
   return s.str();
+}
+
+template <int dim>
+std::size_t FluidSolver<dim>::remove_fluid_where(const std::function<bool(const Vector&)>& overlaps)
+{
+  if (set_up_)
+    throw std::logic_error("FluidSolver::remove_fluid_where after the first step");
+  // The particles are still staged (finish_setup() builds the arrays at the first step).
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < staged_fluid_x_.size(); ++i)
+    if (!overlaps(staged_fluid_x_[i]))
+    {
+      staged_fluid_x_[kept] = staged_fluid_x_[i];
+      staged_fluid_rho_[kept] = staged_fluid_rho_[i];
+      staged_fluid_v_[kept] = staged_fluid_v_[i];
+      ++kept;
+    }
+  const std::size_t removed = staged_fluid_x_.size() - kept;
+  staged_fluid_x_.resize(kept);
+  staged_fluid_rho_.resize(kept);
+  staged_fluid_v_.resize(kept);
+  return removed;
 }
 
 template <int dim>

@@ -156,6 +156,10 @@ public:
   Vector position(std::size_t i) const;
   Vector velocity(std::size_t i) const;
   double pressure(std::size_t i) const;
+  /// Before the first step: removes the fluid particles for which `overlaps(x)` holds
+  /// (e.g. inside a body placed in the water: GenCase-style filling removes them too);
+  /// they never were part of the run. Returns how many.
+  std::size_t remove_fluid_where(const std::function<bool(const Vector&)>& overlaps);
   /// Fluid particles removed so far, in the order of removal.
   const std::vector<LostParticle<dim>>& lost_particles() const { return lost_; }
   /// Fluid particles the run started with (removed ones included).

@@ -6,6 +6,7 @@
 // (2 m r^2 / 5).
 
 #include "common/input_error.h"
+#include "coupling/fluid_overlap.h"
 #include "coupling/rigid_shapes.h"
 
 #include <Eigen/Geometry>
@@ -89,4 +90,26 @@ TEST_CASE("2D outlines: a rectangle's exact area and polar moment, a disc's clos
   const auto d = coupling::closed_surface_shape<2>(disc.nodes, disc.faces, 500, "disc");
   CHECK(d.volume == Approx(M_PI * 0.01).epsilon(0.005));
   CHECK(d.inertia(2, 2) == Approx(disc.inertia(2, 2)).epsilon(0.01));
+}
+
+TEST_CASE("fluid overlapping a skin: inside a closed skin or within the margin of a face")
+{
+  const auto box = coupling::box_shape<3>(Vector3d(0.06, 0.01, 0.06), 1000, 0.03);
+  std::vector<Vector3d> nodes;
+  for (const auto& x : box.nodes)
+    nodes.push_back(x + Vector3d(0.15, 0.1, 0.03));
+  const coupling::SkinOverlap<3> overlap(nodes, box.faces, 0.004);
+  CHECK(overlap.closed());
+  CHECK(overlap(Vector3d(0.15, 0.1, 0.03)));   // centre
+  CHECK(overlap(Vector3d(0.13, 0.095, 0.02))); // on a face
+  CHECK(overlap(Vector3d(0.13, 0.092, 0.02))); // 3 mm in front of it
+  CHECK(!overlap(Vector3d(0.13, 0.09, 0.02))); // 5 mm in front of it
+  CHECK(!overlap(Vector3d(0.5, 0.5, 0.5)));    // far
+  CHECK(overlap(Vector3d(0.175, 0.1, 0.055))); // inside, near a corner
+  CHECK(!overlap(Vector3d(0.19, 0.1, 0.03)));  // 1 cm beside
+  const auto disc = coupling::sphere_shape<2>(0.05, 1000, 0.01);
+  const coupling::SkinOverlap<2> in_2d(disc.nodes, disc.faces, 0.002);
+  CHECK(in_2d.closed());
+  CHECK(in_2d(Vector2d(0.0, 0.03)));
+  CHECK(!in_2d(Vector2d(0.0, 0.06)));
 }
