@@ -6,7 +6,8 @@
 #    paddle, standing in the water, turns by omega t and reports its torque; the fluid
 #    particles the blocks put inside the paddle are removed at the start, so none is
 #    thrown about.
-# 2. Bad bodies: each exits with status 2 and one line on stderr naming the case, the
+# 2. A restart from a checkpoint halfway ends bitwise as the uninterrupted run.
+# 3. Bad bodies: each exits with status 2 and one line on stderr naming the case, the
 #    body and the key (or the file) at fault.
 #   usage: bodies_case.sh CHIPFLEX
 chipflex=$1
@@ -97,6 +98,16 @@ awk -F, '
 ' "$dir/out/probes.csv" || exit 1
 awk -F, 'NR == 1 { exit !(index($0, "paddle_torque_Nm") && index($0, "sphere_rx_rad") && index($0, "sphere_deflection_m")) }' \
   "$dir/out/probes.csv" || fail "probes.csv lacks the per-body columns"
+
+# A restart halfway (checkpoint at 0.015 s) ends bitwise as the uninterrupted run: the
+# bodies' states (rigid sphere, moving wall's clock and impulse) are in the checkpoint.
+"$chipflex" run "$dir/case.prm" --out "$dir/part" --end-time 0.015 --checkpoint-every 0.015 \
+  > "$dir/part.log" 2>&1 || fail "run to 0.015 s: $(tail -2 "$dir/part.log")"
+"$chipflex" run "$dir/case.prm" --out "$dir/part" --restart "$dir/part/checkpoint.h5" \
+  > "$dir/restart.log" 2>&1 || fail "restart: $(tail -2 "$dir/restart.log")"
+cmp -s "$dir/out/probes.csv" "$dir/part/probes.csv" ||
+  fail "the restarted 3D run differs: $(tail -1 "$dir/out/probes.csv") / $(tail -1 "$dir/part/probes.csv")"
+echo "ok: the 3D run restarted at 0.015 s ends bitwise as the uninterrupted one"
 
 failures=0
 # bad NAME NEEDLE: replaces the first body by the lines on stdin, expects status 2 and
