@@ -30,6 +30,10 @@ public:
   /// taken up since the start: changed only by external forces. Used by tests.
   virtual Vector linear_momentum() const = 0;
 
+  /// Total mass, kg (2D: per metre of depth); contact uses it for its derived stiffness
+  /// and damping (coupling/contact.h).
+  virtual double mass() const = 0;
+
   /// World position of the body's probe point (the gate's free end: mean of the file's
   /// `tip` node set, the last link's free end, the SPH strip's free-end skin nodes).
   virtual Vector probe_position() const = 0;

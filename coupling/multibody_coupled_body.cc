@@ -45,6 +45,15 @@ typename MultibodyCoupledBody<dim>::Vector MultibodyCoupledBody<dim>::linear_mom
 }
 
 template <int dim>
+double MultibodyCoupledBody<dim>::mass() const
+{
+  double m = 0;
+  for (int i = 0; i < system_->n_bodies(); ++i)
+    m += system_->body(i).mass();
+  return m;
+}
+
+template <int dim>
 typename MultibodyCoupledBody<dim>::Vector MultibodyCoupledBody<dim>::probe_position() const
 {
   if (probe_)

@@ -35,6 +35,7 @@ public:
   void advance(double dt) override;
   /// Sum over the system's bodies (supports such as a clamp to ground are not counted).
   Vector linear_momentum() const override;
+  double mass() const override;
   /// The probe given at construction; without one, body 0's frame origin.
   Vector probe_position() const override;
   std::vector<double> state() const override { return system_->save_state(); }

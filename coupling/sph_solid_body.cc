@@ -42,6 +42,14 @@ void SphSolidBody::set_skin_forces(const std::vector<Vector>& f)
   solid_.set_external_forces(particle_forces);
 }
 
+double SphSolidBody::mass() const
+{
+  double m = 0;
+  for (double mi : solid_.masses())
+    m += mi;
+  return m;
+}
+
 SphSolidBody::Vector SphSolidBody::probe_position() const
 {
   std::vector<Vector> x;

@@ -24,6 +24,7 @@ public:
   mbs::SkinBody<2>& skin() override { return *this; }
   void advance(double dt) override;
   Vector linear_momentum() const override { return solid_.linear_momentum(); }
+  double mass() const override;
   Vector probe_position() const override;
   std::vector<double> state() const override { return solid_.state(); }
   void restore(const std::vector<double>& state) override { solid_.restore(state); }
