@@ -61,7 +61,11 @@ void CoSimulation<dim>::enable_contact(const ContactParameters& parameters)
       contact_->add_obstacle(fluid_.wall(w));
   }
   for (const auto& c : bodies_)
-    contact_->add_body(c.body->skin(), c.body->mass(), c.name);
+  {
+    CoupledBody<dim>* body = c.body;
+    contact_->add_body(body->skin(), body->mass(), c.name,
+                       [body](double dt) { return body->contact_lead(dt); });
+  }
 }
 
 template <int dim>

@@ -2,6 +2,7 @@
 
 #include "common/input_error.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -116,7 +117,7 @@ int ContactModel<dim>::add_obstacle(const sph::WallSurface<dim>& wall)
 
 template <int dim>
 int ContactModel<dim>::add_body(const mbs::SkinBody<dim>& skin, double mass,
-                                const std::string& name)
+                                const std::string& name, std::function<double(double)> lead)
 {
   if (set_up_)
     throw std::logic_error("ContactModel::add_body after the first compute()");
@@ -127,6 +128,7 @@ int ContactModel<dim>::add_body(const mbs::SkinBody<dim>& skin, double mass,
   b.skin = &skin;
   b.mass = mass;
   b.name = name;
+  b.lead = std::move(lead);
   bodies_.push_back(std::move(b));
   return int(bodies_.size()) - 1;
 }
@@ -370,7 +372,8 @@ void ContactModel<dim>::compute(double dt)
   if (!set_up_)
     setup(dt);
   const int no = n_obstacles();
-  // Positions half a step ahead.
+  // Positions a little ahead: the obstacles (prescribed motion) half a step, each body
+  // by the lead of its integrator.
   obstacle_x_.resize(no);
   for (int o = 0; o < no; ++o)
   {
@@ -386,8 +389,9 @@ void ContactModel<dim>::compute(double dt)
     b.skin->skin_positions(b.x);
     b.skin->skin_velocities(b.v);
     b.xp.resize(b.x.size());
+    const double lead = b.lead ? b.lead(dt) : 0.5;
     for (std::size_t k = 0; k < b.x.size(); ++k)
-      b.xp[k] = b.x[k] + 0.5 * dt * b.v[k];
+      b.xp[k] = b.x[k] + lead * dt * b.v[k];
     b.force.assign(b.x.size(), Vector::Zero());
   }
   bin_faces();

@@ -21,17 +21,21 @@
 // on an incline therefore sticks (no creep) below tan(phi) = mu and slides with the
 // kinetic friction mu f_n above.
 //
-// Forces are evaluated at the positions half a step ahead, x + dt/2 v (for a linear
-// spring held over a step this makes the explicit update area-preserving, so contact
-// does not pump energy), on the skin node and, with the opposite sign, on the vertices
-// of the face with the barycentric weights of the foot point: the weights sum to one, so
-// the forces of every contact sum to zero and momentum between bodies is conserved to
-// round-off.
+// Forces are evaluated at the positions a little ahead, x + lead dt v, where `lead`
+// depends on how the body's integrator turns a load held over the step into motion
+// (CoupledBody::contact_lead: 0 for one symplectic-Euler step, about 1 for the
+// generalised-alpha step, whose velocity update weights the previous step's load):
+// for a linear spring this makes the explicit update area-preserving, so contact
+// neither pumps nor drains energy beyond its damping. The forces act on the skin node and, with the
+// opposite sign, on the vertices of the face with the barycentric weights of the foot point: the
+// weights sum to one, so the forces of every contact sum to zero and momentum between bodies is
+// conserved to round-off.
 
 #include "mbs/skin_body.h"
 #include "sph/wall_surface.h"
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <tuple>
@@ -72,8 +76,10 @@ public:
   /// An obstacle: its vertices and velocities are read at every compute(), so the
   /// surface may move; it must stay at this address. Returns the obstacle index.
   int add_obstacle(const sph::WallSurface<dim>& wall);
-  /// A body (kept by the caller) with its total mass (kg; 2D: per metre of depth).
-  int add_body(const mbs::SkinBody<dim>& skin, double mass, const std::string& name);
+  /// A body (kept by the caller) with its total mass (kg; 2D: per metre of depth) and
+  /// the lead of its integrator (CoupledBody::contact_lead; empty: 1/2).
+  int add_body(const mbs::SkinBody<dim>& skin, double mass, const std::string& name,
+               std::function<double(double)> lead = {});
 
   /// The contact forces for a step of length dt from the current state (evaluated half a
   /// step ahead). The first call fixes the reference step of a derived stiffness.
@@ -109,6 +115,7 @@ private:
     const mbs::SkinBody<dim>* skin;
     double mass;
     std::string name;
+    std::function<double(double)> lead;
     std::vector<Vector> x, v, xp, force; ///< now, velocity, half a step ahead, contact
   };
   /// A surface in the grid: obstacles first (index o), then bodies (n_obstacles + b).

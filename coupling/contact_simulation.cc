@@ -16,7 +16,8 @@ int ContactSimulation<dim>::add_wall(const sph::WallSurface<dim>& wall)
 template <int dim>
 int ContactSimulation<dim>::add_body(CoupledBody<dim>& body, const std::string& name)
 {
-  contact_.add_body(body.skin(), body.mass(), name);
+  contact_.add_body(body.skin(), body.mass(), name,
+                    [&body](double dt) { return body.contact_lead(dt); });
   bodies_.push_back(&body);
   return int(bodies_.size()) - 1;
 }

@@ -36,6 +36,9 @@ public:
   /// Sum over the system's bodies (supports such as a clamp to ground are not counted).
   Vector linear_momentum() const override;
   double mass() const override;
+  /// Symplectic Euler in n sub-steps: (n - 1) / 2n; generalised-alpha: 1/2 + (1 - gamma) / n
+  /// (the step's velocity update weights the previous load by 1 - gamma); midpoint: 1/2.
+  double contact_lead(double dt) const override;
   /// The probe given at construction; without one, body 0's frame origin.
   Vector probe_position() const override;
   std::vector<double> state() const override { return system_->save_state(); }
