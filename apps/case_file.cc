@@ -1,7 +1,9 @@
 #include "apps/case_file.h"
 
+#include "apps/contact_case_keys.h"
 #include "common/input_error.h"
 
+#include <cmath>
 #include <deal.II/base/parameter_handler.h>
 #include <fstream>
 #include <sstream>
@@ -105,6 +107,9 @@ void declare_keys(ParameterHandler& prm)
                     "fluid side is on the right of the direction of travel.");
   prm.declare_entry("wall model", "lennard jones", Selection("dummy particles|lennard jones"),
                     "Model of the extra walls.");
+  prm.declare_entry("fluid passes", "", Anything(),
+                    "Numbers (1-based, comma-separated) of the polylines that are permeable "
+                    "barriers: bodies feel them (subsection contact), the fluid does not.");
   prm.leave_subsection();
   prm.leave_subsection();
 
@@ -116,6 +121,7 @@ void declare_keys(ParameterHandler& prm)
                     "ignored), separated by ';' -> h_<name>_m (surface elevation).");
   prm.leave_subsection();
   declare_body_keys(prm);
+  declare_contact_keys(prm);
 }
 
 std::string trim(const std::string& s)
@@ -303,6 +309,14 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c)
       w.faces.push_back(face);
     }
     c.walls.push_back(w);
+  }
+  for (double k : numbers("geometry/walls/fluid passes", prm.get("fluid passes")))
+  {
+    if (k != std::floor(k) || k < 1 || k > double(c.walls.size()))
+      throw InputError("geometry/walls/fluid passes", "no polyline " + std::to_string(k) +
+                                                          " (there are " +
+                                                          std::to_string(c.walls.size()) + ")");
+    c.walls[std::size_t(k) - 1].fluid_passes = true;
   }
   prm.leave_subsection();
   prm.leave_subsection();

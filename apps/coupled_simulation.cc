@@ -17,7 +17,8 @@ constexpr double sample_interval = 1e-4; // s
 } // namespace
 
 CoupledSimulation::CoupledSimulation(const sph::CaseDescription<2>& fluid_case,
-                                     const BodyCase& bodies, const std::string& output_directory)
+                                     const BodyCase& bodies, const std::string& output_directory,
+                                     const ContactCase& contact)
     : fluid_(fluid_case, output_directory), case_(bodies), skins_(output_directory, "skins"),
       started_(std::chrono::steady_clock::now())
 {
@@ -38,6 +39,8 @@ CoupledSimulation::CoupledSimulation(const sph::CaseDescription<2>& fluid_case,
     bodies_.back()->skin().skin_positions(reference_skins_.back());
     histories_.emplace_back();
   }
+  if (contact.enabled)
+    cosim_->enable_contact(contact.parameters);
   record();
 }
 
@@ -78,7 +81,8 @@ ParticleFrame CoupledSimulation::frame() const
                      wall.surface().faces,
                      {{"displacement", "m", u},
                       {"velocity", "m/s", v},
-                      {"fluid_force", "N/m", wall.delivered()}}});
+                      {"fluid_force", "N/m", wall.delivered()},
+                      {"contact_force", "N/m", wall.delivered_contact()}}});
   }
   skins_.write(time(), skins);
   return fluid_.frame();
@@ -154,6 +158,9 @@ std::string CoupledSimulation::summary() const
       << (case_.bodies[b].wall_model == sph::WallModel::lennard_jones ? "Lennard-Jones"
                                                                       : "dummy-particle")
       << " wall";
+  if (const auto* contact = cosim_->contact())
+    s << "\ncontact: restitution " << contact->parameters().restitution << ", friction "
+      << contact->parameters().friction << ", " << contact->n_obstacles() << " walls";
   return s.str();
 }
 

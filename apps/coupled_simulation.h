@@ -8,6 +8,7 @@
 // against the case's reference curve and the wall time.
 
 #include "apps/body_case_keys.h"
+#include "apps/contact_case_keys.h"
 #include "apps/fluid_simulation.h"
 #include "apps/surface_output.h"
 #include "coupling/co_simulation.h"
@@ -22,7 +23,7 @@ class CoupledSimulation : public Simulation
 {
 public:
   CoupledSimulation(const sph::CaseDescription<2>& fluid_case, const BodyCase& bodies,
-                    const std::string& output_directory);
+                    const std::string& output_directory, const ContactCase& contact = {});
 
   void advance() override;
   double time() const override { return fluid_.time(); }

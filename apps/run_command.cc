@@ -46,7 +46,7 @@ std::unique_ptr<Simulation> make_simulation(const CaseFile& c, const std::string
     if (c.dimension != 2)
       throw InputError(c.path + ": bodies", "coupled bodies are 2D only (dimension = 2)");
     return std::make_unique<CoupledSimulation>(c.case_2d, read_body_case(*c.parameters, c.path),
-                                               dir);
+                                               dir, read_contact_case(*c.parameters, c.path));
   }
   if (c.dimension == 2)
     return std::make_unique<FluidSimulation<2>>(c.case_2d, dir);
