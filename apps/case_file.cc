@@ -313,9 +313,11 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c)
   for (double k : numbers("geometry/walls/fluid passes", prm.get("fluid passes")))
   {
     if (k != std::floor(k) || k < 1 || k > double(c.walls.size()))
-      throw InputError("geometry/walls/fluid passes", "no polyline " + std::to_string(k) +
-                                                          " (there are " +
-                                                          std::to_string(c.walls.size()) + ")");
+    {
+      std::ostringstream what;
+      what << "no polyline " << k << " (there are " << c.walls.size() << ")";
+      throw InputError("geometry/walls/fluid passes", what.str());
+    }
     c.walls[std::size_t(k) - 1].fluid_passes = true;
   }
   prm.leave_subsection();

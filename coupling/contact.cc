@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace chipflex::coupling
@@ -13,7 +14,11 @@ namespace chipflex::coupling
 void check(const ContactParameters& p, const std::string& where)
 {
   auto fail = [&](const std::string& key, const std::string& problem, double value)
-  { throw InputError(where + "/" + key, problem + ", got " + std::to_string(value)); };
+  {
+    std::ostringstream got;
+    got << value;
+    throw InputError(where + "/" + key, problem + ", got " + got.str());
+  };
   if (!(p.restitution > 0 && p.restitution <= 1))
     fail("restitution", "must lie in (0, 1]", p.restitution);
   if (!(p.friction >= 0))
