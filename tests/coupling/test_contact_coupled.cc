@@ -9,12 +9,14 @@
 //   the barrier (within the contact's overlap), far above the tank floor it would reach
 //   without the barrier, while the water below the barrier stays there.
 
+#include "common/hdf5_file.h"
 #include "coupling/co_simulation.h"
 #include "coupling/multibody_coupled_body.h"
 #include "sph/case_setup.h"
 #include "truss_beam.h"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
 
 using namespace chipflex;
 using Vector = Eigen::Vector2d;
@@ -75,43 +77,64 @@ TEST_CASE("a permeable barrier does not act on the fluid", "[coupling][contact]"
   CHECK(wall < 0.5);                         // a wall the fluid feels stops it
 }
 
+namespace
+{
+/// The strip of the header over a barrier at y_barrier, in 6 cm of water.
+struct StripOnBarrier
+{
+  static constexpr double width = 0.15, depth = 0.06, dp = 0.003, y_barrier = 0.024;
+  std::unique_ptr<sph::FluidSolver<2>> fluid;
+  std::unique_ptr<coupling::MultibodyCoupledBody<2>> body;
+  mbs::FloatingFrameBody<2>* skin = nullptr;
+  std::unique_ptr<coupling::CoSimulation<2>> cosim;
+
+  StripOnBarrier()
+  {
+    sph::CaseDescription<2> c;
+    c.fluid.particle_spacing = dp;
+    c.fluid.gravity = Vector(0, -9.81);
+    c.fluid.scheme = sph::TimeScheme::symplectic;
+    c.tank.min = Vector(0, 0);
+    c.tank.max = Vector(width, 0.12);
+    c.fluid_blocks.push_back({Vector(0, 0), Vector(width, depth)});
+    c.walls.push_back(barrier(y_barrier, 0, width, true));
+    fluid = sph::build_fluid(c);
+
+    // A steel strip 40 x 4 mm, tilted by 0.2 rad, starting 1.5 cm above the water.
+    mbs::test::TrussBeamSpec spec;
+    spec.clamped = false;
+    spec.n_modes = 4;
+    spec.length = 0.04;
+    spec.height = 0.004;
+    spec.n_cells = 8;
+    spec.density = 7800;
+    auto system = std::make_unique<mbs::MultibodySystem<2>>();
+    system->set_gravity(c.fluid.gravity);
+    auto strip = std::make_unique<mbs::FloatingFrameBody<2>>(mbs::test::make_truss_beam(spec).body);
+    strip->set_pose(Vector(0.055, depth + 0.015), -0.2);
+    skin = strip.get();
+    system->add_body(std::move(strip));
+    body =
+        std::make_unique<coupling::MultibodyCoupledBody<2>>("flexible", std::move(system), *skin);
+
+    cosim = std::make_unique<coupling::CoSimulation<2>>(*fluid);
+    cosim->add_body(*body, "strip", sph::WallModel::lennard_jones);
+    coupling::ContactParameters contact;
+    contact.restitution = 0.3;
+    contact.friction = 0.4;
+    cosim->enable_contact(contact);
+  }
+};
+} // namespace
+
 TEST_CASE("a chip-like strip sinks through water and rests on a permeable barrier",
           "[coupling][contact]")
 {
-  const double width = 0.15, depth = 0.06, dp = 0.003, y_barrier = 0.024;
-  sph::CaseDescription<2> c;
-  c.fluid.particle_spacing = dp;
-  c.fluid.gravity = Vector(0, -9.81);
-  c.fluid.scheme = sph::TimeScheme::symplectic;
-  c.tank.min = Vector(0, 0);
-  c.tank.max = Vector(width, 0.12);
-  c.fluid_blocks.push_back({Vector(0, 0), Vector(width, depth)});
-  c.walls.push_back(barrier(y_barrier, 0, width, true));
-  auto fluid = sph::build_fluid(c);
-
-  // A steel strip 40 x 4 mm, tilted by 0.2 rad, starting 1.5 cm above the water.
-  mbs::test::TrussBeamSpec spec;
-  spec.clamped = false;
-  spec.n_modes = 4;
-  spec.length = 0.04;
-  spec.height = 0.004;
-  spec.n_cells = 8;
-  spec.density = 7800;
-  auto system = std::make_unique<mbs::MultibodySystem<2>>();
-  system->set_gravity(c.fluid.gravity);
-  auto strip = std::make_unique<mbs::FloatingFrameBody<2>>(mbs::test::make_truss_beam(spec).body);
-  strip->set_pose(Vector(0.055, depth + 0.015), -0.2);
-  auto* skin = strip.get();
-  system->add_body(std::move(strip));
-  coupling::MultibodyCoupledBody<2> body("flexible", std::move(system), *skin);
-
-  coupling::CoSimulation<2> cosim(*fluid);
-  cosim.add_body(body, "strip", sph::WallModel::lennard_jones);
-  coupling::ContactParameters contact;
-  contact.restitution = 0.3;
-  contact.friction = 0.4;
-  cosim.enable_contact(contact);
-
+  StripOnBarrier run;
+  auto& fluid = run.fluid;
+  auto& cosim = run.cosim;
+  auto* skin = run.skin;
+  const double y_barrier = StripOnBarrier::y_barrier;
   auto below_barrier = [&]()
   {
     int n = 0;
@@ -124,12 +147,12 @@ TEST_CASE("a chip-like strip sinks through water and rests on a permeable barrie
   Vector lo = Vector::Constant(1), hi = Vector::Constant(-1);
   bool touched = false;
   std::vector<Vector> x, v;
-  while (cosim.time() < 0.5)
+  while (cosim->time() < 0.5)
   {
-    const double dt = cosim.step();
-    touched = touched || cosim.contact()->n_contacts() > 0;
-    max_overlap = std::max(max_overlap, cosim.contact()->max_overlap());
-    if (cosim.time() > 0.3)
+    const double dt = cosim->step();
+    touched = touched || cosim->contact()->n_contacts() > 0;
+    max_overlap = std::max(max_overlap, cosim->contact()->max_overlap());
+    if (cosim->time() > 0.3)
     {
       // At rest: the frame stays put, and the skin's fastest node is slow on average
       // (the water's pressure noise at dp = 3 mm rocks it by a few mm/s now and then).
@@ -166,4 +189,34 @@ TEST_CASE("a chip-like strip sinks through water and rests on a permeable barrie
   CHECK((hi - lo).norm() < 1e-3);     // 0.2 s of sinking would take it 8 cm
   CHECK(std::abs(below1 - below0) < 0.05 * below0);
   CHECK(fluid->lost_particles().empty());
+}
+
+TEST_CASE("a coupled run with contact restarts bitwise", "[coupling][contact]")
+{
+  // Checkpoint while the strip lies on the barrier with its tangential springs loaded.
+  StripOnBarrier a;
+  while (a.cosim->time() < 0.2)
+    a.cosim->step();
+  REQUIRE(a.cosim->contact()->n_contacts() > 0);
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "chipflex_contact_restart.h5").string();
+  {
+    Hdf5File h5(path, Hdf5File::Mode::create);
+    a.cosim->save(h5, "/state");
+  }
+  for (int k = 0; k < 300; ++k)
+    a.cosim->step();
+
+  StripOnBarrier b;
+  {
+    const Hdf5File h5(path, Hdf5File::Mode::read);
+    b.cosim->load(h5, "/state");
+  }
+  std::filesystem::remove(path);
+  for (int k = 0; k < 300; ++k)
+    b.cosim->step();
+  CHECK(b.cosim->time() == a.cosim->time());
+  CHECK(b.body->state() == a.body->state());
+  CHECK(b.cosim->contact()->state() == a.cosim->contact()->state());
+  CHECK(b.cosim->contact()->n_contacts() > 0);
 }
