@@ -317,56 +317,61 @@ void ContactModel<dim>::detect()
   };
   std::vector<Best> best(ns);
   std::vector<int> touched;
-  for (int b = 0; b < n_bodies(); ++b)
+  // Node i of surface `owner` against the faces near it: every other body's, and the
+  // obstacles' for a body node.
+  auto test_node = [&](int owner, int i, const Vector& x)
   {
-    const int self = no + b;
-    const auto& xs = bodies_[b].xp;
-    for (int i = 0; i < int(xs.size()); ++i)
+    touched.clear();
+    auto consider = [&](int s, int f)
     {
-      const Vector& x = xs[i];
-      touched.clear();
-      auto consider = [&](int s, int f)
+      if (s == owner || (owner < no && s < no))
+        return;
+      const auto& fc = face(s, f);
+      std::array<const Vector*, dim> v;
+      for (int k = 0; k < dim; ++k)
+        v[k] = &vertex(s, fc[k]);
+      const auto p = project<dim>(v, x);
+      if (p.clamped_distance > thickness_)
+        return;
+      Best& bs = best[s];
+      if (bs.face < 0)
+        touched.push_back(s);
+      // The closest face decides; at a shared edge or vertex (equal distances) the
+      // face the node lies most clearly in front of or behind.
+      const double tie = 1e-12 * cell_;
+      if (bs.face < 0 || p.clamped_distance < bs.clamped - tie ||
+          (p.clamped_distance <= bs.clamped + tie &&
+           std::abs(p.distance) > std::abs(bs.p.distance)))
       {
-        if (s == self)
-          return;
-        const auto& fc = face(s, f);
-        std::array<const Vector*, dim> v;
-        for (int k = 0; k < dim; ++k)
-          v[k] = &vertex(s, fc[k]);
-        const auto p = project<dim>(v, x);
-        if (p.clamped_distance > thickness_)
-          return;
-        Best& bs = best[s];
-        if (bs.face < 0)
-          touched.push_back(s);
-        // The closest face decides; at a shared edge or vertex (equal distances) the
-        // face the node lies most clearly in front of or behind.
-        const double tie = 1e-12 * cell_;
-        if (bs.face < 0 || p.clamped_distance < bs.clamped - tie ||
-            (p.clamped_distance <= bs.clamped + tie &&
-             std::abs(p.distance) > std::abs(bs.p.distance)))
-        {
-          bs.clamped = p.clamped_distance;
-          bs.face = f;
-          bs.p = p;
-        }
-      };
-      const auto it = grid_.find(cell_key(x));
-      if (it != grid_.end())
-        for (const auto& [s, f] : it->second)
-          consider(s, f);
-      for (const auto& [s, f] : large_faces_)
-        consider(s, f);
-      std::sort(touched.begin(), touched.end()); // a fixed order whatever the hashing
-      for (int s : touched)
-      {
-        Best& bs = best[s];
-        if (bs.p.inside && bs.p.distance < 0 && -bs.p.distance <= thickness_)
-          contacts_.push_back({b, i, s, bs.face, bs.p.weights, bs.p.normal, -bs.p.distance});
-        bs = Best();
+        bs.clamped = p.clamped_distance;
+        bs.face = f;
+        bs.p = p;
       }
+    };
+    const auto it = grid_.find(cell_key(x));
+    if (it != grid_.end())
+      for (const auto& [s, f] : it->second)
+        consider(s, f);
+    for (const auto& [s, f] : large_faces_)
+      consider(s, f);
+    std::sort(touched.begin(), touched.end()); // a fixed order whatever the hashing
+    for (int s : touched)
+    {
+      Best& bs = best[s];
+      if (bs.p.inside && bs.p.distance < 0 && -bs.p.distance <= thickness_)
+        contacts_.push_back({owner, i, s, bs.face, bs.p.weights, bs.p.normal, -bs.p.distance});
+      bs = Best();
     }
-  }
+  };
+  for (int b = 0; b < n_bodies(); ++b)
+    for (int i = 0; i < int(bodies_[b].xp.size()); ++i)
+      test_node(no + b, i, bodies_[b].xp[i]);
+  // The obstacles' vertices against the bodies' faces: a wall's corner or a barrier's
+  // end that pokes into a body between its nodes.
+  if (n_bodies() > 0)
+    for (int o = 0; o < no; ++o)
+      for (int i = 0; i < int(obstacle_x_[o].size()); ++i)
+        test_node(o, i, obstacle_x_[o][i]);
 }
 
 template <int dim>
@@ -404,9 +409,9 @@ void ContactModel<dim>::compute(double dt)
 
   // Contacts per (body, partner): they share the pair's reduced mass in the damping.
   const int ns = no + n_bodies();
-  std::vector<int> count(n_bodies() * ns, 0);
+  std::vector<int> count(ns * ns, 0);
   for (const auto& c : contacts_)
-    ++count[c.body * ns + c.partner];
+    ++count[c.owner * ns + c.partner];
 
   const double zeta = damping_ratio(parameters_.restitution);
   const double mu = parameters_.friction;
@@ -414,20 +419,23 @@ void ContactModel<dim>::compute(double dt)
   max_overlap_ = 0;
   for (const auto& c : contacts_)
   {
-    const double m = pair_mass(c.body, c.partner) / count[c.body * ns + c.partner];
-    const double k = pair_stiffness(c.body, c.partner);
+    // The pair as (body, other surface): a body's node, or an obstacle's vertex on a body.
+    const int body = c.owner < no ? c.partner - no : c.owner - no;
+    const int other = c.owner < no ? c.owner : c.partner;
+    const double m = pair_mass(body, other) / count[c.owner * ns + c.partner];
+    const double k = pair_stiffness(body, other);
     const double damping = 2 * zeta * std::sqrt(k * m);
     const auto& fc = face(c.partner, c.face);
     Vector v_face = Vector::Zero();
     for (int j = 0; j < dim; ++j)
       v_face += c.weights[j] * vertex_velocity(c.partner, fc[j]);
-    const Vector v_rel = bodies_[c.body].v[c.node] - v_face;
+    const Vector v_rel = vertex_velocity(c.owner, c.node) - v_face;
     const double vn = v_rel.dot(c.normal);
     const double fn = k * c.overlap - damping * vn;
     Vector f = fn * c.normal;
     if (mu > 0)
     {
-      const auto key = std::make_tuple(c.body, c.node, c.partner);
+      const auto key = std::make_tuple(c.owner, c.node, c.partner);
       Vector xi = Vector::Zero();
       if (const auto it = tangential_.find(key); it != tangential_.end())
       {
@@ -452,7 +460,7 @@ void ContactModel<dim>::compute(double dt)
       f += ft;
       tangential[key] = xi;
     }
-    bodies_[c.body].force[c.node] += f;
+    (c.owner < no ? obstacles_[c.owner].force : bodies_[c.owner - no].force)[c.node] += f;
     auto& reaction = c.partner < no ? obstacles_[c.partner].force : bodies_[c.partner - no].force;
     for (int j = 0; j < dim; ++j)
       reaction[fc[j]] -= c.weights[j] * f;

@@ -1,9 +1,10 @@
 #pragma once
 // Contact between bodies and with walls (docs/contact.md): every skin node of a body is
 // tested against the faces of every obstacle (sph::WallSurface: the tank, the case's
-// walls, permeable barriers) and of every other body's skin, found with a hashed cell
-// grid over the faces. A node that lies behind the face closest to it (negative signed
-// distance, the foot point inside the face, less than `thickness` deep) is in contact.
+// walls, permeable barriers) and of every other body's skin, and every obstacle vertex
+// against the bodies' faces, found with a hashed cell grid over the faces. A node that lies behind
+// the face closest to it (negative signed distance, the foot point inside the face, less than
+// `thickness` deep) is in contact.
 //
 // Normal force: linear spring-dashpot on the overlap delta and its rate,
 //     f_n = k delta + c delta',   c = 2 zeta sqrt(k m_c),
@@ -118,10 +119,11 @@ private:
     std::function<double(double)> lead;
     std::vector<Vector> x, v, xp, force; ///< now, velocity, half a step ahead, contact
   };
-  /// A surface in the grid: obstacles first (index o), then bodies (n_obstacles + b).
+  /// Surfaces are numbered obstacles first (index o), then bodies (n_obstacles + b).
+  /// A contact: node `node` of surface `owner` behind face `face` of surface `partner`.
   struct Contact
   {
-    int body, node, partner, face;
+    int owner, node, partner, face;
     std::array<double, dim> weights;
     Vector normal;
     double overlap;
@@ -150,7 +152,7 @@ private:
   std::vector<std::pair<int, int>> large_faces_;
 
   std::vector<Contact> contacts_;
-  /// Tangential spring per live contact, keyed by (body, node, partner).
+  /// Tangential spring per live contact, keyed by (owner, node, partner).
   std::map<std::tuple<int, int, int>, Vector> tangential_;
   int n_contacts_ = 0;
   double max_overlap_ = 0;

@@ -361,3 +361,33 @@ TEST_CASE("contact: two free flexible bars collide head-on, momentum conserved, 
   CHECK(e1 < 0.999 * e0);    // the damped contact did take energy out
   CHECK(v_right > 0.3 * v0); // the momentum really was exchanged
 }
+
+TEST_CASE("contact: a wall's corner poking into a body between its nodes pushes it out",
+          "[coupling][contact]")
+{
+  // A tent-shaped wall whose apex (0, 0.05) lies 1 mm inside the bottom face of a box,
+  // midway between two of its skin nodes (12.5 mm apart), no node near a wall face.
+  sph::WallSurface<2> tent;
+  tent.name = "tent";
+  tent.vertices = {Vector2(0.1, 0), Vector2(0, 0.05), Vector2(-0.1, 0)};
+  tent.faces = {{0, 1}, {1, 2}};
+  const double h = 0.05;
+  auto box = free_box_2d(Vector2(0.00625, 0.05 - 0.001 + h / 2), 0, 0.1, h);
+  coupling::ContactParameters p;
+  p.stiffness = 1e5;
+  coupling::ContactSimulation<2> sim(p);
+  sim.add_wall(tent);
+  sim.add_body(*box, "box");
+  sim.step(1e-5);
+  const auto& c = sim.contact();
+  REQUIRE(c.n_contacts() == 1);
+  Vector2 on_body = Vector2::Zero(), on_wall = Vector2::Zero();
+  for (const auto& f : c.body_forces(0))
+    on_body += f;
+  for (const auto& f : c.obstacle_forces(0))
+    on_wall += f;
+  // Evaluated half a step ahead at rest: the overlap is the 1 mm (to the fall in dt).
+  CHECK(on_body.x() == Approx(0).margin(1e-9));
+  CHECK(on_body.y() == Approx(1e5 * 1e-3).epsilon(1e-3));
+  CHECK((on_body + on_wall).norm() < 1e-12 * on_body.norm());
+}
