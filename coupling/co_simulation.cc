@@ -149,7 +149,7 @@ void CoSimulation<dim>::save_bodies(Hdf5File& file, const std::string& group) co
   if (contact_)
   {
     const auto state = contact_->state();
-    file.write(group + "/contact", state, {state.size()});
+    file.write(group + "_contact", state, {state.size()});
   }
 }
 
@@ -169,7 +169,7 @@ void CoSimulation<dim>::load_bodies(const Hdf5File& file, const std::string& gro
   }
   if (contact_)
   {
-    const std::string path = group + "/contact";
+    const std::string path = group + "_contact";
     if (!file.exists(path))
       throw InputError(file.path(), "checkpoint has no contact state (written without contact)");
     contact_->restore(file.read_doubles(path));

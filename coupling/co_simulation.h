@@ -86,7 +86,8 @@ public:
   /// state under `group`/bodies/<name>. load() restores a run built the same way.
   void save(Hdf5File& file, const std::string& group) const;
   void load(const Hdf5File& file, const std::string& group);
-  /// The bodies' part alone (when the fluid is saved by its owner).
+  /// The bodies' part alone (when the fluid is saved by its owner); with contact, its
+  /// tangential springs go to `group`_contact.
   void save_bodies(Hdf5File& file, const std::string& group) const;
   void load_bodies(const Hdf5File& file, const std::string& group);
 
