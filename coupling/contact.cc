@@ -164,7 +164,7 @@ template <int dim>
 const typename ContactModel<dim>::Vector& ContactModel<dim>::vertex_velocity(int s, int v) const
 {
   const int no = n_obstacles();
-  return s < no ? obstacles_[s].wall->velocities[v] : bodies_[s - no].v[v];
+  return s < no ? obstacle_v_[s][v] : bodies_[s - no].v[v];
 }
 
 template <int dim>
@@ -385,13 +385,17 @@ void ContactModel<dim>::compute(double dt)
   // Positions a little ahead: the obstacles (prescribed motion) half a step, each body
   // by the lead of its integrator.
   obstacle_x_.resize(no);
+  obstacle_v_.resize(no);
   for (int o = 0; o < no; ++o)
   {
     const auto& w = *obstacles_[o].wall;
     obstacle_x_[o] = w.vertices;
     if (w.velocities.size() == w.vertices.size())
-      for (std::size_t k = 0; k < w.vertices.size(); ++k)
-        obstacle_x_[o][k] += 0.5 * dt * w.velocities[k];
+      obstacle_v_[o] = w.velocities;
+    else // a wall given without velocities is at rest
+      obstacle_v_[o].assign(w.vertices.size(), Vector::Zero());
+    for (std::size_t k = 0; k < w.vertices.size(); ++k)
+      obstacle_x_[o][k] += 0.5 * dt * obstacle_v_[o][k];
     obstacles_[o].force.assign(w.vertices.size(), Vector::Zero());
   }
   for (auto& b : bodies_)

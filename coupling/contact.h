@@ -143,6 +143,7 @@ private:
   std::vector<Obstacle> obstacles_;
   std::vector<Body> bodies_;
   std::vector<std::vector<Vector>> obstacle_x_; ///< obstacle vertices half a step ahead
+  std::vector<std::vector<Vector>> obstacle_v_; ///< and their velocities
   double reference_dt_ = 0, thickness_ = 0, cell_ = 0;
   bool set_up_ = false;
 

@@ -391,3 +391,93 @@ TEST_CASE("contact: a wall's corner poking into a body between its nodes pushes 
   CHECK(on_body.y() == Approx(1e5 * 1e-3).epsilon(1e-3));
   CHECK((on_body + on_wall).norm() < 1e-12 * on_body.norm());
 }
+
+namespace
+{
+/// A skin at rest at given positions (for geometry checks of the contact search).
+class StaticSkin : public mbs::SkinBody<2>
+{
+public:
+  StaticSkin(std::vector<Vector2> x, std::vector<std::array<int, 2>> faces)
+      : x_(std::move(x)), faces_(std::move(faces))
+  {
+  }
+  std::size_t n_skin_nodes() const override { return x_.size(); }
+  const std::vector<std::array<int, 2>>& skin_faces() const override { return faces_; }
+  void skin_positions(std::vector<Vector2>& x) const override { x = x_; }
+  void skin_velocities(std::vector<Vector2>& v) const override
+  {
+    v.assign(x_.size(), Vector2::Zero());
+  }
+  void set_skin_forces(const std::vector<Vector2>&) override {}
+
+private:
+  std::vector<Vector2> x_;
+  std::vector<std::array<int, 2>> faces_;
+};
+
+/// Regular n-gon of radius r (counter-clockwise: outward normals) about c.
+StaticSkin polygon(const Vector2& c, double r, int n, double phase)
+{
+  std::vector<Vector2> x;
+  std::vector<std::array<int, 2>> f;
+  for (int k = 0; k < n; ++k)
+  {
+    const double a = phase + 2 * M_PI * k / n;
+    x.push_back(c + r * Vector2(std::cos(a), std::sin(a)));
+    f.push_back({k, (k + 1) % n});
+  }
+  return StaticSkin(x, f);
+}
+} // namespace
+
+TEST_CASE("contact: the cell grid finds the same contacts wherever the cells fall",
+          "[coupling][contact]")
+{
+  // 40 overlapping 12-gons (radius 1 cm, edges 5.2 mm) and a floor. The cell grid's
+  // cells (the longest mean edge, 5.2 mm) fall differently on the same configuration
+  // shifted by a fraction of a cell: a search that missed a face across a cell border
+  // would find other contacts. Reference: translation invariance of the geometry.
+  auto run = [](const Vector2& shift, int& contacts, double& force)
+  {
+    std::vector<StaticSkin> skins;
+    unsigned seed = 12345;
+    auto uniform = [&seed]()
+    {
+      seed = seed * 1103515245u + 12345u;
+      return double((seed >> 8) & 0xFFFF) / 65536.0;
+    };
+    for (int k = 0; k < 40; ++k)
+      skins.push_back(polygon(shift + Vector2(0.2 * uniform(), 0.0085 + 0.05 * uniform()), 0.01, 12,
+                              2 * M_PI * uniform()));
+    coupling::ContactParameters p;
+    p.stiffness = 1e4;
+    p.friction = 0;
+    p.thickness = 0.004;
+    coupling::ContactModel<2> model(p);
+    const auto floor = segment_wall(shift + Vector2(1, 0), shift + Vector2(-1, 0));
+    model.add_obstacle(floor);
+    for (std::size_t k = 0; k < skins.size(); ++k)
+      model.add_body(skins[k], 0.1, "p" + std::to_string(k));
+    model.compute(1e-5);
+    contacts = model.n_contacts();
+    force = 0;
+    for (int b = 0; b < model.n_bodies(); ++b)
+      for (const auto& f : model.body_forces(b))
+        force += f.norm();
+  };
+  int n0 = 0;
+  double f0 = 0;
+  run(Vector2::Zero(), n0, f0);
+  INFO("contacts " << n0 << ", sum |f| " << f0 << " N/m");
+  REQUIRE(n0 > 40); // the polygons do overlap each other and the floor
+  for (const Vector2 shift :
+       {Vector2(0.00131, 0.00277), Vector2(-0.0041, 0.0019), Vector2(0.5003, -0.2501)})
+  {
+    int n = 0;
+    double f = 0;
+    run(shift, n, f);
+    CHECK(n == n0);
+    CHECK(f == Approx(f0).epsilon(1e-9));
+  }
+}
