@@ -269,17 +269,19 @@ void ContactModel<dim>::bin_faces()
         lo = lo.cwiseMin(vertex(s, fc[k]));
         hi = hi.cwiseMax(vertex(s, fc[k]));
       }
+      if (!lo.allFinite() || !hi.allFinite())
+        continue;
       lo.array() -= thickness_;
       hi.array() += thickness_;
       std::array<long, dim> c0, c1;
-      long cells = 1;
+      double cells = 1; // double: a huge face must not overflow the count
       for (int d = 0; d < dim; ++d)
       {
         c0[d] = long(std::floor(lo[d] / cell_));
         c1[d] = long(std::floor(hi[d] / cell_));
-        cells *= c1[d] - c0[d] + 1;
+        cells *= double(c1[d] - c0[d] + 1);
       }
-      if (cells > max_cells_per_face)
+      if (cells > double(max_cells_per_face))
       {
         large_faces_.emplace_back(s, f);
         continue;
@@ -321,6 +323,8 @@ void ContactModel<dim>::detect()
   // obstacles' for a body node.
   auto test_node = [&](int owner, int i, const Vector& x)
   {
+    if (!x.allFinite()) // a body gone non-finite: the run stops on it, not here
+      return;
     touched.clear();
     auto consider = [&](int s, int f)
     {
@@ -407,6 +411,14 @@ void ContactModel<dim>::compute(double dt)
     for (std::size_t k = 0; k < b.x.size(); ++k)
       b.xp[k] = b.x[k] + lead * dt * b.v[k];
     b.force.assign(b.x.size(), Vector::Zero());
+  }
+  contacts_.clear();
+  n_contacts_ = 0;
+  max_overlap_ = 0;
+  if (!(cell_ > 0 && thickness_ > 0)) // no body with a skin: nothing can touch
+  {
+    tangential_.clear();
+    return;
   }
   bin_faces();
   detect();
