@@ -3,12 +3,23 @@
 #include "common/input_error.h"
 
 #include <deal.II/base/parameter_handler.h>
+#include <sstream>
 
 namespace chipflex::apps
 {
 using dealii::ParameterHandler;
 using dealii::Patterns::Bool;
 using dealii::Patterns::Double;
+
+namespace
+{
+std::string text(double value)
+{
+  std::ostringstream s;
+  s << value;
+  return s.str();
+}
+} // namespace
 
 void declare_contact_keys(ParameterHandler& prm)
 {
@@ -18,18 +29,18 @@ void declare_contact_keys(ParameterHandler& prm)
                     "Bodies collide with the walls (tank, polylines, permeable barriers) and "
                     "with each other: penalty spring-dashpot plus Coulomb friction on the skin "
                     "nodes (docs/contact.md).");
-  prm.declare_entry("restitution", std::to_string(d.restitution), Double(0, 1),
+  prm.declare_entry("restitution", text(d.restitution), Double(0, 1),
                     "Coefficient of restitution e (normal relative speed after / before), in "
                     "(0, 1]; sets the contact damping, zeta = -ln e / sqrt(pi^2 + ln^2 e), -.");
-  prm.declare_entry("friction coefficient", std::to_string(d.friction), Double(0),
+  prm.declare_entry("friction coefficient", text(d.friction), Double(0),
                     "Coulomb friction coefficient mu (static = kinetic), -.");
   prm.declare_entry("stiffness", "0", Double(0),
                     "Normal stiffness per contact node, N/m per metre of depth (3D: N/m); 0: "
                     "derived per pair, m_r / n (pi / (steps dt))^2 (m_r: reduced mass of the "
                     "pair, n: its larger skin-node count, dt: the first fluid step).");
-  prm.declare_entry("steps per contact", std::to_string(d.steps), Double(4),
+  prm.declare_entry("steps per contact", text(d.steps), Double(4),
                     "For the derived stiffness: time steps a contact on every node lasts, -.");
-  prm.declare_entry("tangential stiffness ratio", std::to_string(d.tangential_ratio), Double(0),
+  prm.declare_entry("tangential stiffness ratio", text(d.tangential_ratio), Double(0),
                     "Tangential (sticking) spring over normal stiffness, -.");
   prm.declare_entry("thickness", "0", Double(0),
                     "Deepest overlap counted as contact, m; 0: half the shortest mean skin-edge "
