@@ -295,8 +295,17 @@ TEST_CASE("contact: a block sticks on an incline below tan(phi) = mu and slides 
   }
 }
 
-TEST_CASE("contact: two free flexible bars collide head-on, momentum conserved, energy lost",
-          "[coupling][contact]")
+namespace
+{
+struct HeadOn
+{
+  double drift;  ///< largest |p(t) - p0| / |p0|
+  double e0, e1; ///< kinetic + strain energy before and after, J/m
+  double v_right;
+};
+
+/// Two free flexible bars meeting head-on with restitution e (see the header).
+HeadOn head_on(double e)
 {
   const double length = 0.06, height = 0.006, v0 = 1.0;
   std::vector<std::unique_ptr<coupling::MultibodyCoupledBody<2>>> bars;
@@ -321,7 +330,7 @@ TEST_CASE("contact: two free flexible bars collide head-on, momentum conserved, 
         std::make_unique<coupling::MultibodyCoupledBody<2>>("flexible", std::move(system), *skin));
   }
   coupling::ContactParameters p;
-  p.restitution = 0.7;
+  p.restitution = e;
   p.friction = 0.3;
   coupling::ContactSimulation<2> sim(p);
   sim.add_body(*bars[0], "left");
@@ -351,15 +360,29 @@ TEST_CASE("contact: two free flexible bars collide head-on, momentum conserved, 
   }
   const double e1 = energy();
   const double v_right = bars[1]->linear_momentum().x() / bars[1]->mass();
-  INFO("dt " << dt << " s, momentum drift " << worst / p0.norm() << " relative, energy " << e0
-             << " -> " << e1 << " J/m, right bar " << v_right << " m/s, max overlap "
-             << sim.contact().max_overlap());
+  UNSCOPED_INFO("e = " << e << ": dt " << dt << " s, momentum drift " << worst / p0.norm()
+                       << " relative, energy " << e0 << " -> " << e1 << " J/m, right bar "
+                       << v_right << " m/s");
   REQUIRE(touched);
   REQUIRE(after >= 200); // the bars have separated
-  CHECK(worst <= 1e-9 * p0.norm());
-  CHECK(e1 <= e0);
-  CHECK(e1 < 0.999 * e0);    // the damped contact did take energy out
-  CHECK(v_right > 0.3 * v0); // the momentum really was exchanged
+  return {worst / p0.norm(), e0, e1, v_right};
+}
+} // namespace
+
+TEST_CASE("contact: two free flexible bars collide head-on, momentum conserved, energy lost",
+          "[coupling][contact]")
+{
+  const HeadOn damped = head_on(0.7);
+  CHECK(damped.drift <= 1e-9);
+  CHECK(damped.e1 <= damped.e0);
+  CHECK(damped.e1 < 0.95 * damped.e0); // the damped contact did take energy out
+  CHECK(damped.v_right > 0.3);         // the momentum really was exchanged (v0 = 1 m/s)
+  // Without damping only friction (and the modes' share) takes energy: a contact
+  // force that pumped energy, as a force sampled at the wrong time does, would show.
+  const HeadOn elastic = head_on(1.0);
+  CHECK(elastic.drift <= 1e-9);
+  CHECK(elastic.e1 <= elastic.e0);
+  CHECK(elastic.e1 > 0.99 * elastic.e0);
 }
 
 TEST_CASE("contact: a wall's corner poking into a body between its nodes pushes it out",
