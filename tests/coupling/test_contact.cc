@@ -4,9 +4,10 @@
 //    spring-dashpot with zeta = -ln e / sqrt(pi^2 + ln^2 e) returns the normal velocity
 //    times e (Schwager & Poeschel 2007), and a free flight from v turns at v^2 / 2g;
 //    2D and 3D (a box of triangles), within 5 %;
-//  - a block on an incline: with tan(phi) < mu static friction holds it (it does not
-//    creep), with tan(phi) > mu it slides with a = g (sin phi - mu cos phi)
-//    (Coulomb's law; any textbook of mechanics), within 2 %;
+//  - a block on an incline (2D, and a 3D box on a floor tilted about a skew axis): with
+//    tan(phi) < mu static friction holds it (it does not creep), with tan(phi) > mu it
+//    slides with a = g (sin phi - mu cos phi) (Coulomb's law; any textbook of
+//    mechanics), within 2 %;
 //  - two free flexible bars meet head-on: the contact forces are equal and opposite on
 //    node and face (barycentric weights sum to one), so the total linear momentum is
 //    conserved to round-off (1e-9 relative), and the damped contact takes energy out
@@ -18,6 +19,7 @@
 #include "mbs/rigid_body.h"
 #include "truss_beam.h"
 
+#include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
@@ -135,9 +137,11 @@ void box_skin(const Vector3& size, int n, std::vector<Vector3>& nodes,
     }
 }
 
-double bounce_height_3d(double e, double h0)
+/// A free rigid box (1000 kg/m^3) with a skin of 3 x 3 squares per side, centre c,
+/// rotation r.
+std::unique_ptr<coupling::MultibodyCoupledBody<3>> box_3d(const Vector3& size, const Vector3& c,
+                                                          const Eigen::Matrix3d& r)
 {
-  const Vector3 size(0.1, 0.08, 0.05);
   const double density = 1000, m = density * size.prod();
   std::vector<Vector3> nodes;
   std::vector<std::array<int, 3>> faces;
@@ -155,15 +159,30 @@ double bounce_height_3d(double e, double h0)
   system->set_gravity(Vector3(0, 0, -g));
   auto rigid =
       mbs::make_rigid_body<3>(mbs::rigid_body_data<3>(m, Vector3::Zero(), inertia, nodes, faces));
-  rigid->set_pose(Vector3(0, 0, h0 + size[2] / 2), Eigen::Matrix3d::Identity());
+  rigid->set_pose(c, r);
   auto* skin = rigid.get();
   system->add_body(std::move(rigid));
-  coupling::MultibodyCoupledBody<3> box("rigid", std::move(system), *skin);
+  return std::make_unique<coupling::MultibodyCoupledBody<3>>("rigid", std::move(system), *skin);
+}
 
+/// A 2 x 2 m floor of two triangles through the origin, normal r e_z.
+sph::WallSurface<3> floor_3d(const Eigen::Matrix3d& r)
+{
   sph::WallSurface<3> floor;
   floor.name = "floor";
-  floor.vertices = {Vector3(-1, -1, 0), Vector3(1, -1, 0), Vector3(1, 1, 0), Vector3(-1, 1, 0)};
-  floor.faces = {{0, 1, 2}, {0, 2, 3}}; // normal +z
+  for (const Vector3& x :
+       {Vector3(-1, -1, 0), Vector3(1, -1, 0), Vector3(1, 1, 0), Vector3(-1, 1, 0)})
+    floor.vertices.push_back(r * x);
+  floor.faces = {{0, 1, 2}, {0, 2, 3}}; // normal r e_z
+  return floor;
+}
+
+double bounce_height_3d(double e, double h0)
+{
+  const Vector3 size(0.1, 0.08, 0.05);
+  auto box_ptr = box_3d(size, Vector3(0, 0, h0 + size[2] / 2), Eigen::Matrix3d::Identity());
+  auto& box = *box_ptr;
+  const auto floor = floor_3d(Eigen::Matrix3d::Identity());
   coupling::ContactParameters p;
   p.restitution = e;
   coupling::ContactSimulation<3> sim(p);
@@ -187,6 +206,39 @@ double bounce_height_3d(double e, double h0)
   }
   REQUIRE(touched);
   return apex;
+}
+
+/// The 3D box resting on a floor tilted by phi about an axis between x and y (so that
+/// the slope runs along no face of the grid), measured over 0.05 ... 0.35 s.
+double slide_on_incline_3d(double phi, double mu, double& distance)
+{
+  const Vector3 size(0.1, 0.08, 0.05);
+  const Eigen::Matrix3d r =
+      Eigen::AngleAxisd(phi, Vector3(1, 2, 0).normalized()).toRotationMatrix();
+  const Vector3 normal = r * Vector3::UnitZ();
+  const Vector3 down = (-Vector3::UnitZ() + normal.z() * normal).normalized();
+  auto box = box_3d(size, normal * (size[2] / 2), r);
+  coupling::ContactParameters p;
+  p.restitution = 0.5;
+  p.friction = mu;
+  coupling::ContactSimulation<3> sim(p);
+  sim.add_wall(floor_3d(r));
+  sim.add_body(*box, "box");
+  const double dt = 2e-5, t1 = 0.05, t2 = 0.35;
+  double s1 = 0, v1 = 0;
+  while (sim.time() < t2 - dt / 2)
+  {
+    sim.step(dt);
+    if (std::abs(sim.time() - t1) < dt / 2)
+    {
+      s1 = box->probe_position().dot(down);
+      v1 = box->system().body(0).frame_velocity().dot(down);
+    }
+  }
+  REQUIRE(sim.contact().n_contacts() > 0);
+  const double s2 = box->probe_position().dot(down), T = t2 - t1;
+  distance = s2 - s1;
+  return 2 * (s2 - s1 - v1 * T) / (T * T);
 }
 
 struct Slide
@@ -267,6 +319,23 @@ TEST_CASE("contact: a 3D box of triangles dropped on the floor bounces to e^2 h0
   const double apex = bounce_height_3d(e, h0);
   INFO("bounce " << apex << " m, expected " << e * e * h0);
   CHECK(apex == Approx(e * e * h0).epsilon(0.05));
+}
+
+TEST_CASE("contact: a 3D box sticks on an incline below tan(phi) = mu and slides above",
+          "[coupling][contact]")
+{
+  const double mu = 0.4;
+  double distance = 0;
+  const double phi_stick = std::atan(0.8 * mu);
+  slide_on_incline_3d(phi_stick, mu, distance);
+  const double free_slide = 0.5 * g * std::sin(phi_stick) * 0.3 * 0.3;
+  INFO("sticking: moved " << distance << " m in 0.3 s (frictionless: " << free_slide << " m)");
+  CHECK(std::abs(distance) < 1e-5 * free_slide);
+  const double phi = std::atan(1.5 * mu);
+  const double a = slide_on_incline_3d(phi, mu, distance);
+  const double expected = g * (std::sin(phi) - mu * std::cos(phi));
+  INFO("sliding: a = " << a << " m/s^2, expected " << expected);
+  CHECK(a == Approx(expected).epsilon(0.02));
 }
 
 TEST_CASE("contact: a block sticks on an incline below tan(phi) = mu and slides above",
