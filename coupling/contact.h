@@ -2,9 +2,9 @@
 // Contact between bodies and with walls (docs/contact.md): every skin node of a body is
 // tested against the faces of every obstacle (sph::WallSurface: the tank, the case's
 // walls, permeable barriers) and of every other body's skin, and every obstacle vertex
-// against the bodies' faces, found with a hashed cell grid over the faces. A node that lies behind
-// the face closest to it (negative signed distance, the foot point inside the face, less than
-// `thickness` deep) is in contact.
+// against the bodies' faces, found with a hashed cell grid over the faces. A node that
+// lies behind the face closest to it (negative signed distance, the foot point inside
+// the face, less than `thickness` deep) is in contact.
 //
 // Normal force: linear spring-dashpot on the overlap delta and its rate,
 //     f_n = k delta + c delta',   c = 2 zeta sqrt(k m_c),
@@ -27,10 +27,10 @@
 // (CoupledBody::contact_lead: 0 for one symplectic-Euler step, about 1 for the
 // generalised-alpha step, whose velocity update weights the previous step's load):
 // for a linear spring this makes the explicit update area-preserving, so contact
-// neither pumps nor drains energy beyond its damping. The forces act on the skin node and, with the
-// opposite sign, on the vertices of the face with the barycentric weights of the foot point: the
-// weights sum to one, so the forces of every contact sum to zero and momentum between bodies is
-// conserved to round-off.
+// neither pumps nor drains energy beyond its damping. The forces act on the skin node
+// and, with the opposite sign, on the vertices of the face with the barycentric weights
+// of the foot point: the weights sum to one, so the forces of every contact sum to zero
+// and momentum between bodies is conserved to round-off.
 
 #include "mbs/skin_body.h"
 #include "sph/wall_surface.h"
