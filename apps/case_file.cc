@@ -1,9 +1,11 @@
 #include "apps/case_file.h"
 
 #include "apps/body_case_keys.h"
+#include "apps/contact_case_keys.h"
 #include "common/input_error.h"
 #include "meshes/surface_mesh.h"
 
+#include <cmath>
 #include <deal.II/base/parameter_handler.h>
 #include <filesystem>
 #include <fstream>
@@ -114,6 +116,9 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
                     "up beside the case file.");
   prm.declare_entry("wall model", "lennard jones", Selection("dummy particles|lennard jones"),
                     "Model of the extra walls.");
+  prm.declare_entry("fluid passes", "", Anything(),
+                    "Numbers (1-based, comma-separated) of the polylines that are permeable "
+                    "barriers: bodies feel them (subsection contact), the fluid does not.");
   prm.leave_subsection();
   prm.leave_subsection();
 
@@ -125,6 +130,7 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
                     "ignored), separated by ';' -> h_<name>_m (surface elevation).");
   prm.leave_subsection();
   declare_body_keys(prm, n_bodies);
+  declare_contact_keys(prm);
 }
 
 std::string trim(const std::string& s)
@@ -312,6 +318,16 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
       w.faces.push_back(face);
     }
     c.walls.push_back(w);
+  }
+  for (double k : numbers("geometry/walls/fluid passes", prm.get("fluid passes")))
+  {
+    if (k != std::floor(k) || k < 1 || k > double(c.walls.size()))
+    {
+      std::ostringstream what;
+      what << "no polyline " << k << " (there are " << c.walls.size() << ")";
+      throw InputError("geometry/walls/fluid passes", what.str());
+    }
+    c.walls[std::size_t(k) - 1].fluid_passes = true;
   }
   const auto surfaces = split(prm.get("surfaces"), ';');
   for (std::size_t k = 0; k < surfaces.size(); ++k)

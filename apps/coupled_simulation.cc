@@ -37,7 +37,8 @@ std::vector<double> rotation_probe(const Eigen::Matrix<double, dim, dim>& r)
 
 template <int dim>
 CoupledSimulation<dim>::CoupledSimulation(const sph::CaseDescription<dim>& fluid_case,
-                                          BodyCase<dim> bodies, const std::string& output_directory)
+                                          BodyCase<dim> bodies, const std::string& output_directory,
+                                          const ContactCase& contact)
     : fluid_(fluid_case, output_directory), case_(std::move(bodies)),
       skins_(output_directory, "skins"), started_(std::chrono::steady_clock::now())
 {
@@ -68,6 +69,8 @@ CoupledSimulation<dim>::CoupledSimulation(const sph::CaseDescription<dim>& fluid
     b.body->skin().skin_positions(reference_skins_.back());
     histories_.emplace_back();
   }
+  if (contact.enabled)
+    cosim_->enable_contact(contact.parameters);
   record();
 }
 
@@ -115,7 +118,8 @@ ParticleFrame CoupledSimulation<dim>::frame() const
                      wall.surface().faces,
                      {{"displacement", "m", u},
                       {"velocity", "m/s", v},
-                      {"fluid_force", dim == 2 ? "N/m" : "N", wall.delivered()}}});
+                      {"fluid_force", dim == 2 ? "N/m" : "N", wall.delivered()},
+                      {"contact_force", dim == 2 ? "N/m" : "N", wall.delivered_contact()}}});
   }
   skins_.write(time(), skins);
   return fluid_.frame();
@@ -220,6 +224,9 @@ std::string CoupledSimulation<dim>::summary() const
       << (b.displaced_fluid
               ? ", " + std::to_string(b.displaced_fluid) + " fluid particles inside it removed"
               : std::string());
+  if (const auto* contact = cosim_->contact())
+    s << "\ncontact: restitution " << contact->parameters().restitution << ", friction "
+      << contact->parameters().friction << ", " << contact->n_obstacles() << " walls";
   return s.str();
 }
 

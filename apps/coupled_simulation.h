@@ -9,6 +9,7 @@
 // line per body (with the RMS error against the case's reference curve, if any).
 
 #include "apps/body_case_keys.h"
+#include "apps/contact_case_keys.h"
 #include "apps/fluid_simulation.h"
 #include "apps/surface_output.h"
 #include "coupling/co_simulation.h"
@@ -26,7 +27,7 @@ public:
   using Vector = Eigen::Matrix<double, dim, 1>;
 
   CoupledSimulation(const sph::CaseDescription<dim>& fluid_case, BodyCase<dim> bodies,
-                    const std::string& output_directory);
+                    const std::string& output_directory, const ContactCase& contact = {});
 
   void advance() override;
   double time() const override { return fluid_.time(); }

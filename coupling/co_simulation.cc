@@ -4,6 +4,8 @@
 #include "common/input_error.h"
 #include "sph/lennard_jones_wall.h"
 
+#include <cmath>
+
 namespace chipflex::coupling
 {
 template <int dim>
@@ -44,6 +46,35 @@ int CoSimulation<dim>::add_body(CoupledBody<dim>& body, const std::string& name,
 }
 
 template <int dim>
+void CoSimulation<dim>::enable_contact(const ContactParameters& parameters)
+{
+  if (fluid_.step_count() > 0)
+    throw std::logic_error("CoSimulation::enable_contact after the first step");
+  // The fluid's walls no longer change address once it has its first step's set-up
+  // (walls are added before it), and move_wall updates them in place.
+  fluid_.initialise();
+  contact_ = std::make_unique<ContactModel<dim>>(parameters);
+  for (int w = 0; w < fluid_.n_walls(); ++w)
+  {
+    bool skin = false;
+    for (const auto& c : bodies_)
+      skin = skin || c.wall_id == w;
+    if (!skin)
+      contact_->add_obstacle(fluid_.wall(w));
+  }
+  // A body of infinite mass (a wall with a prescribed motion) is an obstacle that moves.
+  for (auto& c : bodies_)
+  {
+    CoupledBody<dim>* body = c.body;
+    if (std::isfinite(body->mass()))
+      c.contact_id = contact_->add_body(body->skin(), body->mass(), c.name,
+                                        [body](double dt) { return body->contact_lead(dt); });
+    else
+      contact_->add_obstacle(fluid_.wall(c.wall_id));
+  }
+}
+
+template <int dim>
 void CoSimulation<dim>::publish_skins()
 {
   for (auto& c : bodies_)
@@ -57,9 +88,16 @@ template <int dim>
 void CoSimulation<dim>::exchange_and_advance()
 {
   const double dt = fluid_.last_time_step();
-  for (auto& c : bodies_)
+  // Every body's contact forces come from the state at t, before any body advances.
+  if (contact_)
+    contact_->compute(dt);
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
   {
-    c.wall->deliver(fluid_.wall_vertex_forces(c.wall_id));
+    auto& c = bodies_[b];
+    if (contact_ && c.contact_id >= 0)
+      c.wall->deliver(fluid_.wall_vertex_forces(c.wall_id), &contact_->body_forces(c.contact_id));
+    else
+      c.wall->deliver(fluid_.wall_vertex_forces(c.wall_id));
     c.body->advance(dt);
   }
 }
@@ -114,6 +152,11 @@ void CoSimulation<dim>::save_bodies(Hdf5File& file, const std::string& group) co
     file.write(group + "/" + c.name, state, {state.size()});
     file.write_attribute(group + "/" + c.name, "kind", c.body->kind());
   }
+  if (contact_)
+  {
+    const auto state = contact_->state();
+    file.write(group + "_contact", state, {state.size()});
+  }
 }
 
 template <int dim>
@@ -129,6 +172,13 @@ void CoSimulation<dim>::load_bodies(const Hdf5File& file, const std::string& gro
       throw InputError(file.path(), "body '" + c.name + "' is a " + c.body->kind() +
                                         " here but a " + kind + " in the checkpoint");
     c.body->restore(file.read_doubles(path));
+  }
+  if (contact_)
+  {
+    const std::string path = group + "_contact";
+    if (!file.exists(path))
+      throw InputError(file.path(), "checkpoint has no contact state (written without contact)");
+    contact_->restore(file.read_doubles(path));
   }
 }
 

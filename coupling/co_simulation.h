@@ -8,8 +8,11 @@
 //   2. the fluid takes its step; its wall pass puts on every wall vertex the reaction of
 //      the fluid, split with the barycentric weights that placed each contact;
 //   3. after the step (HookPoint::after_step) those vertex forces go to the skin nodes
-//      (SkinWall::deliver) and every body advances over the same dt with them held
-//      constant (implicit step or sub-steps, the body's choice).
+//      (SkinWall::deliver), with the contact forces of the same step added when contact
+//      is on (enable_contact: bodies against the fluid's other walls, permeable barriers
+//      included, and against each other; coupling/contact.h), and every body advances
+//      over the same dt with them held constant (implicit step or sub-steps, the body's
+//      choice).
 //
 // With the fluid's symplectic scheme the fluid's momentum changes by exactly
 // -dt * sum(vertex forces) in a step and each body's by +dt * sum(skin forces), so the
@@ -19,6 +22,7 @@
 // first-order in a very small dt, and stable because the fluid step also resolves the
 // fluid-added-mass time scale of the skin (see docs/coupling.md).
 
+#include "coupling/contact.h"
 #include "coupling/coupled_body.h"
 #include "coupling/skin_wall.h"
 #include "sph/fluid_solver.h"
@@ -52,6 +56,14 @@ public:
   int add_body(CoupledBody<dim>& body, const std::string& name, sph::WallModel model,
                sph::LennardJonesParameters lennard_jones = {}, double expected_pressure = 0);
 
+  /// Contact between the bodies and with every wall of the fluid that is not a body's
+  /// skin (the tank, the case's walls, permeable barriers: walls with fluid_passes, which
+  /// the fluid ignores), evaluated each step with the fluid forces. Call after the last
+  /// add_body and before the first step.
+  void enable_contact(const ContactParameters& parameters);
+  /// Null without contact.
+  const ContactModel<dim>* contact() const { return contact_.get(); }
+
   /// One fluid step and the bodies with it; returns dt.
   double step();
   double time() const { return fluid_.time(); }
@@ -74,7 +86,8 @@ public:
   /// state under `group`/bodies/<name>. load() restores a run built the same way.
   void save(Hdf5File& file, const std::string& group) const;
   void load(const Hdf5File& file, const std::string& group);
-  /// The bodies' part alone (when the fluid is saved by its owner).
+  /// The bodies' part alone (when the fluid is saved by its owner); with contact, its
+  /// tangential springs go to `group`_contact.
   void save_bodies(Hdf5File& file, const std::string& group) const;
   void load_bodies(const Hdf5File& file, const std::string& group);
 
@@ -85,11 +98,13 @@ private:
     std::unique_ptr<SkinWall<dim>> wall;
     int wall_id;
     std::string name;
+    int contact_id = -1; ///< its index in the contact model (-1: none, or an obstacle)
   };
   void publish_skins();
   void exchange_and_advance();
 
   sph::FluidSolver<dim>& fluid_;
   std::vector<Coupled> bodies_;
+  std::unique_ptr<ContactModel<dim>> contact_;
 };
 } // namespace chipflex::coupling

@@ -31,6 +31,17 @@ public:
   /// taken up since the start: changed only by external forces. Used by tests.
   virtual Vector linear_momentum() const = 0;
 
+  /// Total mass, kg (2D: per metre of depth); contact uses it for its derived stiffness
+  /// and damping (coupling/contact.h).
+  virtual double mass() const = 0;
+
+  /// Where within a step t -> t + dt a load held over the step acts, as a fraction of
+  /// dt ahead of t, for this body's integrator: contact forces are evaluated at the
+  /// positions x + lead dt v so that a contact spring neither gains nor loses energy
+  /// over the step (docs/contact.md). 0.5 suits a scheme that integrates a held load
+  /// exactly.
+  virtual double contact_lead(double /*dt*/) const { return 0.5; }
+
   /// World position of the body's probe point (the gate's free end: mean of the file's
   /// `tip` node set, the last link's free end, the SPH strip's free-end skin nodes).
   virtual Vector probe_position() const = 0;

@@ -46,6 +46,40 @@ typename MultibodyCoupledBody<dim>::Vector MultibodyCoupledBody<dim>::linear_mom
 }
 
 template <int dim>
+double MultibodyCoupledBody<dim>::contact_lead(double dt) const
+{
+  const int n = max_step_ > 0 ? std::max(1, static_cast<int>(std::ceil(dt / max_step_ - 1e-9))) : 1;
+  const auto& o = system_->options();
+  switch (o.scheme)
+  {
+  case mbs::IntegratorOptions::Scheme::symplectic_euler:
+    // x1 = x + dt v + c dt^2 a with c = (n + 1) / 2n under a held load: a spring
+    // sampled at x + lead dt v keeps det = 1 for lead = 1 - c.
+    return (n - 1) / (2.0 * n);
+  case mbs::IntegratorOptions::Scheme::generalized_alpha:
+  {
+    // Chung & Hulbert's parameters from rho_infinity (as MultibodySystem::step).
+    const double rho = o.rho_infinity;
+    const double am = (2 * rho - 1) / (rho + 1), af = rho / (rho + 1);
+    const double gamma = 0.5 + af - am;
+    return 0.5 + (1 - gamma) / n;
+  }
+  case mbs::IntegratorOptions::Scheme::momentum_midpoint:
+    return 0.5;
+  }
+  return 0.5;
+}
+
+template <int dim>
+double MultibodyCoupledBody<dim>::mass() const
+{
+  double m = 0;
+  for (int i = 0; i < system_->n_bodies(); ++i)
+    m += system_->body(i).mass();
+  return m;
+}
+
+template <int dim>
 typename MultibodyCoupledBody<dim>::Vector MultibodyCoupledBody<dim>::probe_position() const
 {
   if (probe_)

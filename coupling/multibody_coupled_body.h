@@ -35,6 +35,10 @@ public:
   void advance(double dt) override;
   /// Sum over the system's bodies (supports such as a clamp to ground are not counted).
   Vector linear_momentum() const override;
+  double mass() const override;
+  /// Symplectic Euler in n sub-steps: (n - 1) / 2n; generalised-alpha: 1/2 + (1 - gamma) / n
+  /// (the step's velocity update weights the previous load by 1 - gamma); midpoint: 1/2.
+  double contact_lead(double dt) const override;
   /// The probe given at construction; without one, body 0's frame origin.
   Vector probe_position() const override;
   /// Body 0's frame rotation and the largest elastic skin displacement of body 0.

@@ -13,6 +13,7 @@
 #include "mbs/skin_body.h"
 
 #include <Eigen/Geometry>
+#include <limits>
 
 namespace chipflex::coupling
 {
@@ -41,6 +42,8 @@ public:
   std::string kind() const override { return "moving-wall"; }
   mbs::SkinBody<dim>& skin() override { return *this; }
   void advance(double dt) override;
+  /// Infinite: nothing moves it off its path (contact treats it as a moving obstacle).
+  double mass() const override { return std::numeric_limits<double>::infinity(); }
   /// The impulse it has taken (its drive holds it on its path whatever the load).
   Vector linear_momentum() const override { return impulse_; }
   /// The point c(t) of the axis.

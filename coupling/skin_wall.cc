@@ -21,6 +21,7 @@ SkinWall<dim>::SkinWall(mbs::SkinBody<dim>& body, const std::string& name, sph::
         throw std::logic_error("SkinWall '" + name + "': face refers to skin node " +
                                std::to_string(v) + " of " + std::to_string(n));
   delivered_.assign(n, Vector::Zero());
+  contact_.assign(n, Vector::Zero());
   publish();
 }
 
@@ -32,14 +33,26 @@ void SkinWall<dim>::publish()
 }
 
 template <int dim>
-void SkinWall<dim>::deliver(const std::vector<Vector>& vertex_forces)
+void SkinWall<dim>::deliver(const std::vector<Vector>& vertex_forces,
+                            const std::vector<Vector>* contact_forces)
 {
   if (vertex_forces.size() != body_.n_skin_nodes())
     throw std::logic_error("SkinWall '" + surface_.name +
                            "': " + std::to_string(vertex_forces.size()) + " forces for " +
                            std::to_string(body_.n_skin_nodes()) + " skin nodes");
   delivered_ = vertex_forces;
-  body_.set_skin_forces(vertex_forces);
+  if (!contact_forces)
+  {
+    body_.set_skin_forces(vertex_forces);
+    return;
+  }
+  if (contact_forces->size() != vertex_forces.size())
+    throw std::logic_error("SkinWall '" + surface_.name + "': contact forces of another skin");
+  contact_ = *contact_forces;
+  sum_.resize(vertex_forces.size());
+  for (std::size_t i = 0; i < sum_.size(); ++i)
+    sum_[i] = vertex_forces[i] + contact_[i];
+  body_.set_skin_forces(sum_);
 }
 
 template class SkinWall<2>;

@@ -32,15 +32,19 @@ public:
 
   /// Copies the body's skin node positions and velocities into the wall vertices.
   void publish();
-  /// Hands the fluid's reaction on the wall vertices (plus any other forces, e.g. a
-  /// permeable barrier's contact forces, summed by the caller) to the body's skin nodes.
-  void deliver(const std::vector<Vector>& vertex_forces);
-  /// The forces last delivered (for output and momentum bookkeeping).
+  /// Hands the fluid's reaction on the wall vertices, plus the contact forces on the
+  /// skin nodes when given, to the body's skin nodes (set_skin_forces replaces, so both
+  /// go in one call).
+  void deliver(const std::vector<Vector>& vertex_forces,
+               const std::vector<Vector>* contact_forces = nullptr);
+  /// The fluid's part of the forces last delivered (for output and bookkeeping).
   const std::vector<Vector>& delivered() const { return delivered_; }
+  /// The contact part (zeros without contact).
+  const std::vector<Vector>& delivered_contact() const { return contact_; }
 
 private:
   mbs::SkinBody<dim>& body_;
   sph::WallSurface<dim> surface_;
-  std::vector<Vector> delivered_;
+  std::vector<Vector> delivered_, contact_, sum_;
 };
 } // namespace chipflex::coupling

@@ -42,6 +42,20 @@ void SphSolidBody::set_skin_forces(const std::vector<Vector>& f)
   solid_.set_external_forces(particle_forces);
 }
 
+double SphSolidBody::contact_lead(double dt) const
+{
+  const int n = std::max(1, static_cast<int>(std::ceil(dt / solid_.stable_time_step() - 1e-9)));
+  return (n - 1) / (2.0 * n);
+}
+
+double SphSolidBody::mass() const
+{
+  double m = 0;
+  for (double mi : solid_.masses())
+    m += mi;
+  return m;
+}
+
 SphSolidBody::Vector SphSolidBody::probe_position() const
 {
   std::vector<Vector> x;

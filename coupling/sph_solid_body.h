@@ -24,6 +24,9 @@ public:
   mbs::SkinBody<2>& skin() override { return *this; }
   void advance(double dt) override;
   Vector linear_momentum() const override { return solid_.linear_momentum(); }
+  double mass() const override;
+  /// Symplectic Euler in n = ceil(dt / stable step) sub-steps: (n - 1) / 2n.
+  double contact_lead(double dt) const override;
   Vector probe_position() const override;
   std::vector<double> state() const override { return solid_.state(); }
   void restore(const std::vector<double>& state) override { solid_.restore(state); }

@@ -70,6 +70,7 @@ public:
   int add_force_element(std::unique_ptr<ForceElement<dim>> element);
   void set_gravity(const Vector& g) { gravity_ = g; }
   void set_options(const IntegratorOptions& options);
+  const IntegratorOptions& options() const { return options_; }
 
   int n_bodies() const { return static_cast<int>(bodies_.size()); }
   FloatingFrameBody<dim>& body(int i) { return *bodies_[i]; }

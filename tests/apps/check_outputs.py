@@ -117,7 +117,7 @@ def check_with_h5py(directory, stopped, series_expected):
 
     # walls.xdmf, skins.xdmf: one temporal collection per surface, named after it.
     expected = {"walls": ["velocity", "fluid_force"],
-                "skins": ["displacement", "velocity", "fluid_force"]}
+                "skins": ["displacement", "velocity", "fluid_force", "contact_force"]}
     for series, arrays in expected.items():
         if series not in series_expected:
             continue
@@ -193,7 +193,7 @@ def check_with_paraview(directory, series_expected):
     }
     expected = {"particles": ["velocity", "pressure", "density", "kind", "id"],
                 "walls": ["velocity", "fluid_force"],
-                "skins": ["displacement", "velocity", "fluid_force"]}
+                "skins": ["displacement", "velocity", "fluid_force", "contact_force"]}
     for series, arrays in expected.items():
         if series not in series_expected:
             continue

@@ -7,6 +7,7 @@
 #include "coupling/displacement_history.h"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
 
 using chipflex::coupling::DisplacementHistory;
 
@@ -46,7 +47,9 @@ TEST_CASE("displacement history interpolates, round-trips and refuses extrapolat
   CHECK(h.interpolate(0.2, 1) == Approx(0.0).margin(1e-12));
   CHECK_THROWS_AS(h.interpolate(0.31, 0), chipflex::InputError);
 
-  const std::string path = "history_roundtrip.csv";
+  // In the system temporary folder: tests never write into the working tree.
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "chipflex_history_roundtrip.csv").string();
   h.write_csv(path);
   const auto back = DisplacementHistory::read_csv(path);
   REQUIRE(back.size() == 3);

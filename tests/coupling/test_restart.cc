@@ -9,6 +9,7 @@
 #include "truss_beam.h"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
 
 using namespace chipflex;
 using Vector = Eigen::Vector2d;
@@ -57,7 +58,9 @@ TEST_CASE("coupled checkpoint and restart reproduce the uninterrupted run", "[co
 {
   Coupled a;
   a.run(150);
-  const std::string path = "coupled_checkpoint.h5";
+  // In the system temporary folder: tests never write into the working tree.
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "chipflex_coupled_checkpoint.h5").string();
   {
     Hdf5File h5(path, Hdf5File::Mode::create);
     a.cosim->save(h5, "/state");
