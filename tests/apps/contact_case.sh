@@ -41,8 +41,8 @@ subsection bodies
     set name = box
     set kind = rigid
     set clamped = false
-    set width = 0.03
-    set height = 0.008
+    set size = 0.03, 0.008
+    set skin spacing = 0.002
     set density = 2500
     set position = 0.07, 0.075
   end
