@@ -102,6 +102,7 @@ ReducedBodyData reduce_body(const ReductionSettings& settings, ReductionTimings*
   if (settings.straight_sided)
   {
     mesh.order = 1;
+    mesh.complete_second_order = true;
     mesh.midpoint_nodes.clear();
   }
   t.mesh_reading = seconds_since(t0);

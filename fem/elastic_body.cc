@@ -95,6 +95,10 @@ void ElasticBody<dim>::build_triangulation()
 template <int dim>
 void ElasticBody<dim>::build_curved_mapping()
 {
+  if (!mesh.complete_second_order)
+    throw InputError(mesh.path, "incomplete second-order cells (8-node quadrilaterals, 20-node "
+                                "hexahedra): mesh with Mesh.SecondOrderIncomplete = 0, or "
+                                "reduce --straight-sided");
   std::unique_ptr<FiniteElement<dim>> linear, quadratic;
   if (mesh.simplex)
   {

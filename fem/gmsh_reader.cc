@@ -203,15 +203,14 @@ GmshMeshData read_gmsh_mesh(const std::string& path)
             const int complete = simplex ? (dim + 1) * (dim + 2) / 2 : (dim == 2 ? 9 : 27);
             if (order == 2 && (n_nodes_per_element != complete ||
                                static_cast<int>(sub_entities.size()) != n_nodes_per_element))
-              throw InputError(path, "incomplete second-order cells (e.g. 20-node hexahedra); "
-                                     "mesh with Mesh.SecondOrderIncomplete = 0");
+              mesh.complete_second_order = false;
             for (std::size_t i = 0; i + n_nodes_per_element <= e.nodes[k].size();
                  i += n_nodes_per_element)
             {
               std::vector<unsigned int> cell(corners);
               for (int c = 0; c < corners; ++c)
                 cell[c] = vertex(e.nodes[k][i + c]);
-              for (int n = corners; n < n_nodes_per_element; ++n)
+              for (int n = corners; mesh.complete_second_order && n < n_nodes_per_element; ++n)
               {
                 std::vector<unsigned int> key;
                 for (const int c : sub_entities[n])

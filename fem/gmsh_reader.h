@@ -23,6 +23,9 @@ struct GmshMeshData
   /// cells: 6-node triangles, 9-node quadrilaterals, 10-node tetrahedra, 27-node
   /// hexahedra). The FE degree is chosen by `reduce`, independently.
   unsigned int order = 1;
+  /// False for incomplete second-order cells (8-node quadrilaterals, 20-node hexahedra):
+  /// their geometry can only be used straight-sided (`reduce --straight-sided`).
+  bool complete_second_order = true;
   /// Order 2: the position of each second-order node, keyed by the sorted vertex ids of
   /// the edge, face or cell whose middle it is (one node per such sub-entity).
   std::map<std::vector<unsigned int>, std::array<double, 3>> midpoint_nodes;
@@ -36,8 +39,7 @@ struct GmshMeshData
 };
 
 /// Throws InputError (naming the file) for a missing, malformed or truncated file, a
-/// mesh without 2D/3D cells, mixed cell kinds or orders, cells of order above 2 or
-/// incomplete second-order cells (8-node quadrilaterals, 20-node hexahedra), or faces of
-/// a group not on the body.
+/// mesh without 2D/3D cells, mixed cell kinds or orders, cells of order above 2, or faces
+/// of a group not on the body.
 GmshMeshData read_gmsh_mesh(const std::string& path);
 } // namespace chipflex::fem
