@@ -99,6 +99,16 @@ int elements_along(double length, double size)
   return std::max(1, static_cast<int>(std::ceil(length / size - 0.01)));
 }
 
+/// Length of the spiral's centre curve r = R + b phi between two angles:
+/// int sqrt(r^2 + b^2) dphi = (1 / b) int sqrt(u^2 + b^2) du.
+double spiral_length(const ChipMeshSpec& spec, double phi0, double phi1)
+{
+  const double b = spec.pitch / two_pi;
+  auto F = [b](double u)
+  { return 0.5 * (u * std::hypot(u, b) + b * b * std::log(u + std::hypot(u, b))); };
+  return (F(spec.curl_radius + b * phi1) - F(spec.curl_radius + b * phi0)) / b;
+}
+
 /// Elements of the structured chip mesh: along the chip (per sector, for arcs split into
 /// sectors), across the width; through the thickness is spec.layers.
 struct Divisions
@@ -119,6 +129,9 @@ Divisions divisions(const ChipMeshSpec& spec)
                          static_cast<int>(std::ceil(angle / (2 * M_PI / 3) - 1e-9)));
     d.along = elements_along(spec.curl_radius * angle / d.sectors, spec.size);
   }
+  else if (spec.shape == ChipMeshSpec::Shape::spiral)
+    // Quarter turns (see extrude_planar_chip), each with its own number along.
+    d.sectors = std::max(1, static_cast<int>(std::ceil(4 * spec.turns - 1e-9)));
   else if (spec.shape == ChipMeshSpec::Shape::helical)
   {
     // Quarter turns (see sweep_helical_chip).
@@ -288,13 +301,16 @@ gmsh::vectorpair extrude_planar_chip(const ChipMeshSpec& spec)
   else // spiral
   {
     // Inner and outer edges are the Archimedean spirals r = R -+ w/2 + p phi / (2 pi),
-    // interpolated by C2 splines through 64 points per turn (relative error ~1e-7).
+    // interpolated by C2 splines through 64 points per turn (relative error ~1e-7), one
+    // face per quarter turn between radial edges: a single face would get its nodes at
+    // equal fractions of the unequal inner and outer lengths, badly skewed cells.
     const double angle = total_angle(spec);
-    const int n_points = std::max(9, static_cast<int>(std::ceil(64 * spec.turns)) + 1);
+    const int sectors = division.sectors,
+              per_sector = std::max(4, static_cast<int>(std::ceil(64 * spec.turns / sectors)));
     std::vector<int> inner, outer;
-    for (int i = 0; i < n_points; ++i)
+    for (int i = 0; i <= sectors * per_sector; ++i)
     {
-      const double phi = angle * i / (n_points - 1);
+      const double phi = angle * i / (sectors * per_sector);
       const Vec c = centre(spec, phi);
       const double r = norm(c);
       const Vec radial{c[0] / r, c[1] / r, 0};
@@ -302,12 +318,25 @@ gmsh::vectorpair extrude_planar_chip(const ChipMeshSpec& spec)
       inner.push_back(occ::addPoint(p[0], p[1], z0));
       outer.push_back(occ::addPoint(q[0], q[1], z0));
     }
-    const int n_along = division.along;
-    const int a = occ::addSpline(inner), b = occ::addSpline(outer);
-    const int s = occ::addLine(inner.front(), outer.front()),
-              e = occ::addLine(inner.back(), outer.back());
-    curves = {{a, n_along}, {b, n_along}, {s, n_width}, {e, n_width}};
-    faces.push_back(occ::addPlaneSurface({occ::addCurveLoop({s, b, e, a})}));
+    std::vector<int> radial_edges;
+    for (int k = 0; k <= sectors; ++k)
+    {
+      radial_edges.push_back(occ::addLine(inner[k * per_sector], outer[k * per_sector]));
+      curves.emplace_back(radial_edges.back(), n_width);
+    }
+    for (int k = 0; k < sectors; ++k)
+    {
+      const std::vector<int> in(inner.begin() + k * per_sector,
+                                inner.begin() + (k + 1) * per_sector + 1),
+          out(outer.begin() + k * per_sector, outer.begin() + (k + 1) * per_sector + 1);
+      const int a = occ::addSpline(in), b = occ::addSpline(out);
+      const int n_along = elements_along(
+          spiral_length(spec, angle * k / sectors, angle * (k + 1) / sectors), spec.size);
+      curves.emplace_back(a, n_along);
+      curves.emplace_back(b, n_along);
+      faces.push_back(
+          occ::addPlaneSurface({occ::addCurveLoop({radial_edges[k], b, radial_edges[k + 1], a})}));
+    }
   }
 
   gmsh::vectorpair base;
@@ -474,11 +503,7 @@ double chip_centre_length(const ChipMeshSpec& spec)
   case ChipMeshSpec::Shape::spiral:
     break;
   }
-  // r = R + b phi: L = int sqrt(r^2 + b^2) dphi = (1 / b) int sqrt(u^2 + b^2) du.
-  const double b = spec.pitch / two_pi, r1 = R + b * total_angle(spec);
-  auto F = [b](double u)
-  { return 0.5 * (u * std::hypot(u, b) + b * b * std::log(u + std::hypot(u, b))); };
-  return (F(r1) - F(R)) / b;
+  return spiral_length(spec, 0, total_angle(spec));
 }
 
 double chip_volume(const ChipMeshSpec& spec)
