@@ -1,5 +1,6 @@
-// `chipflex mesh gate|plate`: structured (default) or simplex gmsh meshes of the bodies
-// chipflex reduces, with the physical groups body, clamp, tip and skin.
+// `chipflex mesh gate|plate|chip`: structured (default) or simplex gmsh meshes of the bodies
+// chipflex reduces, with the physical groups body, clamp, tip and skin (gate, plate) or
+// body, skin, start and end (chip, meshes/chip_mesher.h).
 //
 // Coordinates (documented in docs/body_file_format.md):
 //   gate  2D: x in [0, thickness], y in [0, length]; clamp at the top (y = length), tip at
@@ -12,19 +13,81 @@
 #include "apps/commands.h"
 #include "common/input_error.h"
 #include "meshes/block_mesher.h"
+#include "meshes/chip_mesher.h"
 
 #include <iostream>
 
 namespace chipflex::apps
 {
+namespace
+{
+int mesh_chip(const Arguments& args)
+{
+  CommandLine cl("chipflex mesh chip --shape helical|spiral|arc|ribbon -o MESH.msh [options]",
+                 "Mesh a machining chip: a width x thickness section swept along the chip's\n"
+                 "centre curve, structured hexahedra (27-node quadratic by default) with --layers\n"
+                 "elements through the thickness. Physical groups body, skin, start, end (a ring,\n"
+                 "--shape arc --arc-angle 360, has no ends). Coordinates: docs/chips.md.");
+  cl.add_positional("KIND", "chip");
+  cl.add_option("--output", "FILE", "output mesh file (.msh)", "", true);
+  cl.add_alias("-o", "--output");
+  cl.add_option("--shape", "SHAPE", "helical, spiral, arc (360 degrees: a ring) or ribbon", "",
+                true);
+  cl.add_option("--width", "M", "section width (in the curl plane / radial)", "0.002");
+  cl.add_option("--thickness", "M", "section thickness (along the curl axis)", "0.0002");
+  cl.add_option("--curl-radius", "M",
+                "radius of the centre curve (spiral: at its start); above width / 2", "0.002");
+  cl.add_option("--pitch", "M",
+                "per turn: helical axial advance (default 0.001), spiral radial growth "
+                "(default 2 x width)");
+  cl.add_option("--turns", "N", "helical and spiral: number of turns", "2");
+  cl.add_option("--arc-angle", "DEG", "arc: angle of the arc, (0, 360]", "180");
+  cl.add_option("--length", "M", "ribbon: length", "0.01");
+  cl.add_option("--size", "M",
+                "element edge length along the chip and across the width "
+                "(default: width / 4)");
+  cl.add_option("--layers", "N", "elements through the thickness, at least 2", "2");
+  cl.add_option("--order", "N", "1: 8-node, 2: 27-node (curved) hexahedra", "2");
+  if (!cl.parse(args))
+    return 0;
+
+  meshes::ChipMeshSpec spec;
+  spec.shape = meshes::parse_chip_shape(cl.get("--shape"), "--shape");
+  spec.width = cl.get_double("--width");
+  spec.thickness = cl.get_double("--thickness");
+  spec.curl_radius = cl.get_double("--curl-radius");
+  spec.turns = cl.get_double("--turns");
+  spec.arc_angle = cl.get_double("--arc-angle");
+  spec.length = cl.get_double("--length");
+  spec.pitch = cl.has("--pitch")                                   ? cl.get_double("--pitch")
+               : spec.shape == meshes::ChipMeshSpec::Shape::spiral ? 2 * spec.width
+                                                                   : 0.001;
+  spec.size = cl.has("--size") ? cl.get_double("--size") : spec.width / 4;
+  spec.layers = static_cast<int>(cl.get_int("--layers"));
+  spec.order = static_cast<int>(cl.get_int("--order"));
+
+  const std::string output = cl.get("--output");
+  const auto summary = meshes::write_chip_mesh(spec, output);
+  std::cout << "wrote " << output << ": " << cl.get("--shape")
+            << (meshes::chip_is_closed(spec) ? " (closed ring)" : "") << " chip, "
+            << summary.n_elements << (spec.order == 2 ? " 27-node" : " 8-node") << " hexahedra, "
+            << summary.n_nodes << " nodes, volume " << meshes::chip_volume(spec)
+            << " m^3, centre length " << meshes::chip_centre_length(spec) << " m\n";
+  return 0;
+}
+} // namespace
+
 int mesh_command(const Arguments& args)
 {
-  CommandLine cl("chipflex mesh gate|plate -o MESH.msh [options]",
+  if (!args.empty() && args[0] == "chip")
+    return mesh_chip(args);
+  CommandLine cl("chipflex mesh gate|plate|chip -o MESH.msh [options]",
                  "Generate a gmsh .msh 4.1 mesh with physical groups body, clamp, tip, skin and\n"
                  "the sides xmin, xmax, ymin, ymax (, zmin, zmax).\n"
                  "gate: 2D rectangle thickness (x) by length (y), clamped at the top end;\n"
-                 "      with --depth a 3D plate. plate: 3D strip along x, clamped at x = 0.");
-  cl.add_positional("KIND", "gate or plate");
+                 "      with --depth a 3D plate. plate: 3D strip along x, clamped at x = 0.\n"
+                 "chip: a machining chip (see `chipflex mesh chip --help`).");
+  cl.add_positional("KIND", "gate, plate or chip");
   cl.add_option("--output", "FILE", "output mesh file (.msh)", "", true);
   cl.add_alias("-o", "--output");
   cl.add_option("--length", "M", "length, clamp to tip (gate 0.079, plate 0.1)");
@@ -69,7 +132,7 @@ int mesh_command(const Arguments& args)
     spec.size = value("--size", thickness / 2);
   }
   else
-    throw InputError("chipflex mesh " + kind, "unknown kind (expected gate or plate)");
+    throw InputError("chipflex mesh " + kind, "unknown kind (expected gate, plate or chip)");
 
   const std::string output = cl.get("--output");
   const auto n = meshes::write_block_mesh(spec, output);

@@ -67,6 +67,9 @@ int reduce_command(const Arguments& args)
   cl.add_repeated_option("--static-modes", "LIST",
                          "static correction modes, e.g. pressure:skin,force:tip:0,-1");
   cl.add_option("--degree", "P", "element degree, 1 or 2", "2");
+  cl.add_flag("--straight-sided",
+              "ignore a second-order mesh's curved geometry: straight-sided cells through the "
+              "corners (to measure the faceting error)");
   cl.add_option("--export-matrices", "DIR",
                 "write M and K, clamped DoFs left out (one process; docs/export_matrices.md)");
   cl.add_option("--export-matrices-format", "FORMAT",
@@ -103,6 +106,7 @@ int reduce_command(const Arguments& args)
   if (degree != 1 && degree != 2)
     throw InputError("--degree", "must be 1 or 2, got " + std::to_string(degree));
   settings.degree = degree;
+  settings.straight_sided = cl.flag("--straight-sided");
   if (cl.has("--export-matrices"))
     settings.export_directory = cl.get("--export-matrices");
   settings.export_format = cl.get("--export-matrices-format");

@@ -98,7 +98,13 @@ ReducedBodyData reduce_body(const ReductionSettings& settings, ReductionTimings*
   ReductionTimings local;
   ReductionTimings& t = timings ? *timings : local;
   const auto t0 = clock::now();
-  const GmshMeshData mesh = read_gmsh_mesh(settings.mesh_file);
+  GmshMeshData mesh = read_gmsh_mesh(settings.mesh_file);
+  if (settings.straight_sided)
+  {
+    mesh.order = 1;
+    mesh.complete_second_order = true;
+    mesh.midpoint_nodes.clear();
+  }
   t.mesh_reading = seconds_since(t0);
   if (mesh.dim == 2)
     return reduce<2>(mesh, settings, t);

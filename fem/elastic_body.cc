@@ -14,6 +14,7 @@
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_fe.h>
+#include <deal.II/fe/mapping_fe_field.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -82,6 +83,68 @@ void ElasticBody<dim>::build_triangulation()
         (static_cast<unsigned long long>(cell->active_cell_index()) * n_processes) / n_cells));
 }
 
+// deal.II 9.4 offers three ways to a mapping on given high-order node positions:
+// MappingQCache (hypercube cells only), MappingQEulerian (displacements from the straight
+// cell, FE_Q only) and MappingFEField (absolute positions in any vector FE field). The
+// last covers quadrilaterals, hexahedra and simplices alike, so chipflex interpolates the
+// gmsh nodes with it: a vector FE_Q(2) (or FE_SimplexP(2)) field whose value at each
+// support point is the gmsh node there. A second-order node is matched to its support
+// point by the corners of the sub-entity (edge, face, cell) whose middle both are: the
+// corners where the linear shape functions do not vanish, independent of how gmsh and
+// deal.II order and orient their cells.
+template <int dim>
+void ElasticBody<dim>::build_curved_mapping()
+{
+  if (!mesh.complete_second_order)
+    throw InputError(mesh.path, "incomplete second-order cells (8-node quadrilaterals, 20-node "
+                                "hexahedra): mesh with Mesh.SecondOrderIncomplete = 0, or "
+                                "reduce --straight-sided");
+  std::unique_ptr<FiniteElement<dim>> linear, quadratic;
+  if (mesh.simplex)
+  {
+    linear = std::make_unique<FE_SimplexP<dim>>(1);
+    quadratic = std::make_unique<FE_SimplexP<dim>>(2);
+  }
+  else
+  {
+    linear = std::make_unique<FE_Q<dim>>(1);
+    quadratic = std::make_unique<FE_Q<dim>>(2);
+  }
+  geometry_fe = std::make_unique<FESystem<dim>>(*quadratic, dim);
+  geometry_dof_handler.reinit(triangulation);
+  geometry_dof_handler.distribute_dofs(*geometry_fe);
+  geometry_positions.reinit(geometry_dof_handler.n_dofs());
+  const auto& unit = quadratic->get_unit_support_points();
+  std::vector<types::global_dof_index> local(geometry_fe->n_dofs_per_cell());
+  for (const auto& cell : geometry_dof_handler.active_cell_iterators())
+  {
+    cell->get_dof_indices(local);
+    for (unsigned int b = 0; b < unit.size(); ++b)
+    {
+      std::vector<unsigned int> key;
+      for (unsigned int v = 0; v < linear->n_dofs_per_cell(); ++v)
+        if (linear->shape_value(v, unit[b]) > 1e-8)
+          key.push_back(cell->vertex_index(v));
+      std::sort(key.begin(), key.end());
+      const std::array<double, 3>* x = nullptr;
+      if (key.size() == 1)
+        x = &mesh.vertices[key[0]];
+      else
+      {
+        const auto it = mesh.midpoint_nodes.find(key);
+        if (it == mesh.midpoint_nodes.end())
+          throw InputError(mesh.path, "a second-order cell lacks the node in the middle of "
+                                      "one of its edges or faces");
+        x = &it->second;
+      }
+      for (unsigned int c = 0; c < dim; ++c)
+        geometry_positions[local[geometry_fe->component_to_system_index(c, b)]] = (*x)[c];
+    }
+  }
+  mapping = std::make_unique<MappingFEField<dim, dim, Vector<double>>>(geometry_dof_handler,
+                                                                       geometry_positions);
+}
+
 template <int dim>
 void ElasticBody<dim>::setup_system()
 {
@@ -96,6 +159,10 @@ void ElasticBody<dim>::setup_system()
     fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
     mapping = std::make_unique<MappingQ<dim>>(1);
   }
+  // Isoparametric: a degree-1 field on curved cells could not hold rigid rotations
+  // (u = w x x is quadratic there), so linear elements keep straight-sided cells.
+  if (mesh.order == 2 && degree == 2)
+    build_curved_mapping();
   dof_handler.reinit(triangulation);
   dof_handler.distribute_dofs(*fe);
   DoFRenumbering::subdomain_wise(dof_handler);

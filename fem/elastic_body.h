@@ -26,6 +26,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
+#include <deal.II/lac/vector.h>
 #include <map>
 #include <memory>
 #include <string>
@@ -75,6 +76,15 @@ public:
   const unsigned int n_processes, this_process;
 
   Triangulation<dim> triangulation;
+  /// Second-order meshes: the vector FE_Q(2) / FE_SimplexP(2) field of the node positions
+  /// that `mapping` interpolates; declared before it, which refers to them, (empty for linear
+  /// meshes).
+  std::unique_ptr<FESystem<dim>> geometry_fe;
+  DoFHandler<dim> geometry_dof_handler;
+  Vector<double> geometry_positions;
+  /// The geometry: straight-sided (MappingQ(1), MappingFE(P1)) for a linear mesh; for a
+  /// second-order gmsh mesh the isoparametric MappingFEField on the gmsh nodes, so that
+  /// curved cells stay curved (fem/elastic_body.cc, build_curved_mapping).
   std::unique_ptr<Mapping<dim>> mapping;
   std::unique_ptr<FESystem<dim>> fe;
   DoFHandler<dim> dof_handler;
@@ -98,6 +108,7 @@ public:
 
 private:
   void build_triangulation();
+  void build_curved_mapping();
   void number_nodes();
   void find_group_faces();
   void build_skin();

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <gmsh.h>
+#include <set>
 #include <unordered_map>
 
 namespace chipflex::fem
@@ -40,6 +41,43 @@ Elements elements_of(int d, int tag)
   std::vector<std::vector<std::size_t>> element_tags;
   gmsh::model::mesh::getElements(e.types, element_tags, e.nodes, d, tag);
   return e;
+}
+
+/// For each node of a second-order element, given its reference coordinates (gmsh's
+/// `localNodeCoord`), the corners whose linear shape functions do not vanish there: one
+/// corner for a vertex, the ends of an edge, the corners of a face or of the cell for the
+/// node in its middle. Returns fewer entries than nodes if two nodes share a sub-entity.
+std::vector<std::vector<int>> midpoint_sub_entities(const std::vector<double>& local, int dim,
+                                                    int corners, bool simplex)
+{
+  const std::size_t n_nodes = local.size() / dim;
+  std::vector<std::vector<int>> result;
+  std::set<std::vector<int>> seen;
+  for (std::size_t n = 0; n < n_nodes; ++n)
+  {
+    std::vector<int> support;
+    for (int c = 0; c < corners; ++c)
+    {
+      double value = 1;
+      if (simplex)
+      {
+        // Barycentric coordinates on gmsh's reference simplex (corner 0 at the origin).
+        double sum = 0;
+        for (int d = 0; d < dim; ++d)
+          sum += local[n * dim + d];
+        value = c == 0 ? 1 - sum : local[n * dim + c - 1];
+      }
+      else
+        // Multilinear shape functions on [-1, 1]^dim, the corners listed first.
+        for (int d = 0; d < dim; ++d)
+          value *= 0.5 * (1 + local[n * dim + d] * local[c * dim + d]);
+      if (value > 1e-8)
+        support.push_back(c);
+    }
+    if (seen.insert(support).second)
+      result.push_back(support);
+  }
+  return result;
 }
 
 int corners_of(int type, int* element_dim, bool* simplex)
@@ -113,10 +151,20 @@ GmshMeshData read_gmsh_mesh(const std::string& path)
           mesh.vertices.push_back({x[0], x[1], x[2]});
           return vertex_of_tag[tag] = mesh.vertices.size() - 1;
         };
+        auto node_position = [&](std::size_t tag) -> std::array<double, 3>
+        {
+          const auto p = position.find(tag);
+          if (p == position.end())
+            throw InputError(path, "element refers to a missing node " + std::to_string(tag));
+          const double* x = &coords[3 * p->second];
+          if (dim == 2 && std::abs(x[2]) > 1e-12 * (1 + std::abs(x[0]) + std::abs(x[1])))
+            throw InputError(path, "a 2D mesh must lie in the plane z = 0");
+          return {x[0], x[1], x[2]};
+        };
         gmsh::vectorpair entities;
         gmsh::model::getEntities(entities, dim);
         std::map<int, std::pair<unsigned int, unsigned int>> cell_range; // entity -> [first, end)
-        int cell_kind = -1;
+        int cell_kind = -1, cell_order = -1;
         for (const auto& [d, tag] : entities)
         {
           const auto e = elements_of(d, tag);
@@ -135,26 +183,48 @@ GmshMeshData read_gmsh_mesh(const std::string& path)
             if (cell_kind != -1 && cell_kind != int(simplex))
               throw InputError(path, "mixed simplex and quad/hex cells are not supported");
             cell_kind = simplex;
-            int n_nodes_per_element = 0;
+            int n_nodes_per_element = 0, order = 1;
+            std::vector<double> local;
             {
               std::string name;
-              int ed, order, n_primary;
-              std::vector<double> local;
+              int ed, n_primary;
               gmsh::model::mesh::getElementProperties(e.types[k], name, ed, order,
                                                       n_nodes_per_element, local, n_primary);
             }
+            if (order > 2)
+              throw InputError(path, "cells of order " + std::to_string(order) +
+                                         " (chipflex reads linear and quadratic meshes)");
+            if (cell_order != -1 && cell_order != order)
+              throw InputError(path, "mixed linear and quadratic cells are not supported");
+            cell_order = order;
+            const auto sub_entities = order == 2
+                                          ? midpoint_sub_entities(local, dim, corners, simplex)
+                                          : std::vector<std::vector<int>>();
+            const int complete = simplex ? (dim + 1) * (dim + 2) / 2 : (dim == 2 ? 9 : 27);
+            if (order == 2 && (n_nodes_per_element != complete ||
+                               static_cast<int>(sub_entities.size()) != n_nodes_per_element))
+              mesh.complete_second_order = false;
             for (std::size_t i = 0; i + n_nodes_per_element <= e.nodes[k].size();
                  i += n_nodes_per_element)
             {
               std::vector<unsigned int> cell(corners);
               for (int c = 0; c < corners; ++c)
                 cell[c] = vertex(e.nodes[k][i + c]);
+              for (int n = corners; mesh.complete_second_order && n < n_nodes_per_element; ++n)
+              {
+                std::vector<unsigned int> key;
+                for (const int c : sub_entities[n])
+                  key.push_back(cell[c]);
+                std::sort(key.begin(), key.end());
+                mesh.midpoint_nodes[key] = node_position(e.nodes[k][i + n]);
+              }
               mesh.cells.push_back(std::move(cell));
             }
           }
           cell_range[tag] = {first, static_cast<unsigned int>(mesh.cells.size())};
         }
         mesh.simplex = cell_kind == 1;
+        mesh.order = cell_order;
 
         gmsh::vectorpair groups;
         gmsh::model::getPhysicalGroups(groups);

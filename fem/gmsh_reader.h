@@ -17,9 +17,18 @@ struct GmshMeshData
   bool simplex = false; ///< triangles/tetrahedra (true) or quads/hexahedra (false)
   /// Vertices used by the body's cells, renumbered 0..n-1 (z = 0 in 2D).
   std::vector<std::array<double, 3>> vertices;
-  /// Body cells: corner vertex ids in gmsh's order (higher-order gmsh nodes are dropped:
-  /// chipflex meshes are straight-sided, the FE degree is chosen by `reduce`).
+  /// Body cells: corner vertex ids in gmsh's order.
   std::vector<std::vector<unsigned int>> cells;
+  /// Geometry order of the body cells: 1 (straight-sided) or 2 (complete second-order
+  /// cells: 6-node triangles, 9-node quadrilaterals, 10-node tetrahedra, 27-node
+  /// hexahedra). The FE degree is chosen by `reduce`, independently.
+  unsigned int order = 1;
+  /// False for incomplete second-order cells (8-node quadrilaterals, 20-node hexahedra):
+  /// their geometry can only be used straight-sided (`reduce --straight-sided`).
+  bool complete_second_order = true;
+  /// Order 2: the position of each second-order node, keyed by the sorted vertex ids of
+  /// the edge, face or cell whose middle it is (one node per such sub-entity).
+  std::map<std::vector<unsigned int>, std::array<double, 3>> midpoint_nodes;
   /// Physical groups of dimension dim-1: name -> faces, each as its corner vertex ids.
   std::map<std::string, std::vector<std::vector<unsigned int>>> face_groups;
   /// Physical groups of dimension dim: name -> cell indices.
@@ -30,6 +39,7 @@ struct GmshMeshData
 };
 
 /// Throws InputError (naming the file) for a missing, malformed or truncated file, a
-/// mesh without 2D/3D cells, mixed cell kinds, or faces of a group not on the body.
+/// mesh without 2D/3D cells, mixed cell kinds or orders, cells of order above 2, or faces
+/// of a group not on the body.
 GmshMeshData read_gmsh_mesh(const std::string& path);
 } // namespace chipflex::fem

@@ -127,7 +127,7 @@ void ModalReduction<dim>::compute_normal_modes(ReductionTimings& timings)
   // Clamped: K is positive definite, shift 0. Free-free: K is singular; a shift of
   // -1e-8 times a typical eigenvalue keeps K - sigma M regular (condition ~1e8) while the
   // rigid modes (lambda = 0) stay the nearest and are found and discarded.
-  const double target =
+  double target =
       n_rigid ? -1e-8 * diagonal_ratio(body.stiffness_matrix, body.mass_matrix, layout) : 0.;
   const unsigned int n_wanted = n_modes + n_rigid;
   const auto n_free = body.dof_handler.n_dofs() -
@@ -140,6 +140,29 @@ void ModalReduction<dim>::compute_normal_modes(ReductionTimings& timings)
                                      layout, body.node_block_size);
   timings.factorisation = solution.factorisation_seconds;
   timings.eigen_solve = solution.solve_seconds;
+  if (n_rigid)
+  {
+    // A slender, flexible body (a long curled chip) can have its first elastic eigenvalue
+    // far below that shift. The inverted eigenvalues 1 / (lambda - sigma) of the rigid
+    // and the low elastic modes then nearly coincide and Krylov-Schur may return the
+    // wrong ones (four of six rigid modes for a two-turn helical chip). Solve again with
+    // the shift a hundredth of the lowest clearly elastic eigenvalue found.
+    double lowest_elastic = 0;
+    for (const double lambda : solution.eigenvalues)
+      if (lambda > 1e-4 * solution.eigenvalues.back())
+      {
+        lowest_elastic = lambda;
+        break;
+      }
+    if (lowest_elastic > 0 && -target > lowest_elastic)
+    {
+      target = -1e-2 * lowest_elastic;
+      solution = solve_eigenproblem(body.stiffness_matrix, body.mass_matrix, n_wanted, target,
+                                    layout, body.node_block_size);
+      timings.factorisation += solution.factorisation_seconds;
+      timings.eigen_solve += solution.solve_seconds;
+    }
+  }
 
   if (n_rigid)
   {

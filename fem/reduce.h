@@ -16,7 +16,10 @@ struct ReductionSettings
 {
   std::string mesh_file;
   Material material;
-  unsigned int degree = 2;               ///< element degree on the gmsh cells, 1 or 2
+  unsigned int degree = 2; ///< element degree on the gmsh cells, 1 or 2
+  /// A second-order mesh's cells are curved (isoparametric mapping on the gmsh nodes) with
+  /// degree 2; true: straight-sided through the corners, as for a linear mesh.
+  bool straight_sided = false;
   std::string clamp_group;               ///< empty: free-free body
   unsigned int n_modes = 10;             ///< elastic normal modes (rigid modes never counted)
   std::vector<std::string> static_modes; ///< load cases, e.g. "pressure:skin", "force:tip:0,-1"
