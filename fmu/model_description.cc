@@ -3,6 +3,7 @@
 #include <cctype>
 #include <set>
 #include <sstream>
+#include <string>
 
 namespace chipflex::fmu
 {
@@ -34,10 +35,16 @@ std::string xml_escape(const std::string& s)
 
 std::string number(double v)
 {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
+  // The shortest of 15 or 17 significant digits that reads back to the same double.
+  for (int digits : {15, 17})
+  {
+    std::ostringstream s;
+    s.precision(digits);
+    s << v;
+    if (digits == 17 || std::stod(s.str()) == v)
+      return s.str();
+  }
+  return {};
 }
 
 /// SI base-unit exponents of the units the variables use (FMI 2.0, 2.2.2).
