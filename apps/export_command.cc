@@ -2,11 +2,13 @@
 //   fmu  an FMI 2.0 co-simulation FMU around chipflex's own floating-frame body and
 //        integrator (fmu/, docs/export_fmu_sid.md), for any FMI importer
 //   sid  the Standard Input Data of Wallrapp (1994) as a text file (.SID_FEM), for
-//        multibody codes that read flexible bodies in that form (export/sid_writer.h)
+//        multibody codes that read flexible bodies in that form (common/sid_writer.h)
 
 #include "apps/command_line.h"
 #include "apps/commands.h"
 #include "common/input_error.h"
+#include "common/reduced_body_file.h"
+#include "common/sid_writer.h"
 #include "fmu/fmu_export.h"
 
 #include <filesystem>
@@ -58,6 +60,38 @@ int export_fmu_command(const Arguments& args)
             << " inputs, " << s.n_outputs << " outputs)\n";
   return 0;
 }
+int export_sid_command(const Arguments& args)
+{
+  CommandLine cl("chipflex export sid BODY.h5 -o BODY.SID_FEM [options]",
+                 "Write the body's Standard Input Data (Wallrapp 1994) as text: refmod, the\n"
+                 "nodes' frame data (origin, phi), mdCM, J, Ct, Cr, Me, Gr, Ge, Oe, ksigma, Ke,\n"
+                 "De (docs/export_fmu_sid.md: which entries are filled, which are zero).");
+  cl.add_positional("BODY", "body file from chipflex reduce");
+  cl.add_option("--output", "SID", "the SID file to write");
+  cl.add_alias("-o", "--output");
+  cl.add_option("--nodes", "SET",
+                "write only this node set of the body file to the frame section (default: all "
+                "nodes)");
+  if (!cl.parse(args))
+    return 0;
+  if (!cl.has("BODY") || !cl.has("--output"))
+    throw InputError("chipflex export sid", "needs BODY.h5 and -o BODY.SID_FEM (--help)");
+  const ReducedBodyData body = read_reduced_body(cl.get("BODY"));
+  SidOptions options;
+  if (cl.has("--nodes"))
+  {
+    const auto it = body.node_sets.find(cl.get("--nodes"));
+    if (it == body.node_sets.end() || it->second.empty())
+      throw InputError("--nodes " + cl.get("--nodes"),
+                       "no such (non-empty) node set in " + cl.get("BODY"));
+    options.nodes = it->second;
+  }
+  write_sid(cl.get("--output"), body, options);
+  std::cout << "wrote " << cl.get("--output") << ": SID of " << body.n_modes() << " modes, "
+            << (options.nodes.empty() ? body.n_nodes() : int(options.nodes.size()))
+            << " nodes, mass " << body.mass << (body.dim == 2 ? " kg/m" : " kg") << "\n";
+  return 0;
+}
 } // namespace
 
 int export_command(const Arguments& args)
@@ -75,6 +109,8 @@ int export_command(const Arguments& args)
   const Arguments rest(args.begin() + 1, args.end());
   if (args[0] == "fmu")
     return export_fmu_command(rest);
+  if (args[0] == "sid")
+    return export_sid_command(rest);
   throw InputError("chipflex export " + args[0], "unknown format (fmu or sid)");
 }
 } // namespace chipflex::apps

@@ -6,7 +6,9 @@
 # --clamped` at equal steps to 1e-9 of their largest value (simulate writes 12 digits, so
 # the difference seen is ~1e-12; the same integrator on the same equations). Bad input: a
 # file that is not a body file, a bad model identifier: one error line, exit 2, no FMU.
-#   usage: export_fmu.sh CHIPFLEX FMU_STEP_RESPONSE
+# `chipflex export sid` of the same body: the SID layout's frame (one node per FE node, or
+# per node of --nodes SET), and an unknown node set refused.
+#   usage: export_gate.sh CHIPFLEX FMU_STEP_RESPONSE
 chipflex=$1
 master=$2
 dir=$(mktemp -d)
@@ -53,4 +55,13 @@ cp "$dir/err" "$dir/bad_body_err"
 rc=$?
 [ $rc -eq 2 ] && grep -q "model-identifier" "$dir/err" || fail "bad identifier: exit $rc, $(cat "$dir/err")"
 [ ! -e "$dir/bad.fmu" ] || fail "a failed export left its output"
+"$chipflex" export sid "$dir/gate.h5" -o "$dir/gate.SID_FEM" > /dev/null || fail "export sid"
+head -3 "$dir/gate.SID_FEM" | tr '\n' ' ' | grep -q "^part new modal refmod" || fail "SID header"
+nodes=$(grep -c "^new node" "$dir/gate.SID_FEM")
+[ "$nodes" -eq 1161 ] || fail "SID has $nodes nodes, not 1161"
+"$chipflex" export sid "$dir/gate.h5" -o "$dir/tip.SID_FEM" --nodes tip > /dev/null || fail "export sid --nodes"
+[ "$(grep -c "^new node" "$dir/tip.SID_FEM")" -eq 9 ] || fail "SID of the tip set"
+"$chipflex" export sid "$dir/gate.h5" -o "$dir/bad.SID_FEM" --nodes nowhere > /dev/null 2> "$dir/err"
+rc=$?
+[ $rc -eq 2 ] && grep -q "nowhere" "$dir/err" && [ ! -e "$dir/bad.SID_FEM" ] || fail "bad SID node set: exit $rc"
 echo "ok: FMU vs chipflex simulate: $(tr '\n' ' ' < "$dir/diff"); bad body: $(cat "$dir/bad_body_err")"
