@@ -22,9 +22,10 @@ constexpr int max_bodies = 4;
 
 void declare_body(ParameterHandler& prm)
 {
-  prm.declare_entry("kind", "none", Selection("none|rigid|chain|flexible|sph solid"),
+  prm.declare_entry("kind", "none", Selection("none|rigid|chain|flexible|sph solid|fmu"),
                     "none, rigid (box), chain (rigid links with torsion springs, Table 2), "
-                    "flexible (reduced body file) or sph solid (Gray et al. 2001 strip).");
+                    "flexible (reduced body file), sph solid (Gray et al. 2001 strip) or fmu "
+                    "(an FMI 2.0 co-simulation FMU with skin variables).");
   prm.declare_entry("name", "", Anything(), "Name in outputs; empty: body<N>.");
   prm.declare_entry("wall model", "lennard jones", Selection("lennard jones|dummy particles"),
                     "How the fluid feels the skin.");
@@ -54,6 +55,8 @@ void declare_body(ParameterHandler& prm)
                     "Chain torsion springs, Nm/rad per metre; 0: Table 2.");
   prm.declare_entry("spring damping", "0", Double(0), "Chain, Nms/rad per metre.");
   prm.declare_entry("body file", "", Anything(), "Flexible: HDF5 file from `chipflex reduce`.");
+  prm.declare_entry("fmu file", "", Anything(),
+                    "Fmu: FMI 2.0 co-simulation FMU, e.g. from `chipflex export fmu`.");
   prm.declare_entry("modes", "-1", Integer(-1), "Flexible: first n modes of the file; -1: all.");
   prm.declare_entry("modal damping", "0", Double(0), "Flexible: damping ratio of every mode, -.");
   prm.declare_entry("rayleigh mass", "0", Double(0), "Flexible: Rayleigh alpha, 1/s.");
@@ -175,6 +178,8 @@ BodyCase read_body_case(ParameterHandler& prm, const std::string& case_path)
     d.spring_damping = prm.get_double("spring damping");
     if (d.kind == coupling::BodyKind::flexible)
       d.body_file = locate(prm.get("body file"), case_path, where + ", body file");
+    if (d.kind == coupling::BodyKind::fmu)
+      d.fmu_file = locate(prm.get("fmu file"), case_path, where + ", fmu file");
     d.modes = prm.get_integer("modes");
     d.modal_damping = prm.get_double("modal damping");
     d.rayleigh_mass = prm.get_double("rayleigh mass");

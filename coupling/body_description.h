@@ -13,10 +13,11 @@ namespace chipflex::coupling
 {
 enum class BodyKind
 {
-  rigid,    ///< a rigid rectangle (box), free or fixed
-  chain,    ///< the seed's rigid-link gate with torsion springs (Table 2)
-  flexible, ///< a reduced floating-frame body from `chipflex reduce`
-  sph_solid ///< an SPH-solid strip (Gray, Monaghan & Swift 2001; Table 1)
+  rigid,     ///< a rigid rectangle (box), free or fixed
+  chain,     ///< the seed's rigid-link gate with torsion springs (Table 2)
+  flexible,  ///< a reduced floating-frame body from `chipflex reduce`
+  sph_solid, ///< an SPH-solid strip (Gray, Monaghan & Swift 2001; Table 1)
+  fmu        ///< an FMI 2.0 co-simulation FMU with skin variables (coupling/fmu_body.h)
 };
 
 struct BodyDescription
@@ -63,6 +64,9 @@ struct BodyDescription
   bool large_rotation = false;
   std::string clamp_set = "clamp";
 
+  // ---- fmu (also: clamped, position, angle, rho_infinity, max_step, damping, probe_set)
+  std::string fmu_file;
+
   // ---- sph solid (Table 1 defaults)
   sph::SolidMaterial solid;
   double solid_spacing = 1e-3; ///< m, along the strip
@@ -72,7 +76,7 @@ struct BodyDescription
   Eigen::Vector2d direction = Eigen::Vector2d(0, -1); ///< clamped end -> free end
 };
 
-/// "rigid", "chain", "flexible", "sph solid" (also "sph-solid"); InputError otherwise.
+/// "rigid", "chain", "flexible", "sph solid" (also "sph-solid"), "fmu"; InputError otherwise.
 BodyKind parse_body_kind(const std::string& word, const std::string& where);
 std::string to_string(BodyKind kind);
 } // namespace chipflex::coupling

@@ -2,6 +2,7 @@
 
 #include "common/input_error.h"
 #include "common/reduced_body_file.h"
+#include "coupling/fmu_body.h"
 #include "coupling/large_rotation_beam_skin.h"
 #include "coupling/multibody_coupled_body.h"
 #include "coupling/sph_solid_body.h"
@@ -26,8 +27,10 @@ BodyKind parse_body_kind(const std::string& word, const std::string& where)
     return BodyKind::flexible;
   if (word == "sph solid" || word == "sph-solid")
     return BodyKind::sph_solid;
+  if (word == "fmu")
+    return BodyKind::fmu;
   throw InputError(where, "unknown body kind '" + word +
-                              "' (expected rigid, chain, flexible or sph solid)");
+                              "' (expected rigid, chain, flexible, sph solid or fmu)");
 }
 
 std::string to_string(BodyKind kind)
@@ -42,6 +45,8 @@ std::string to_string(BodyKind kind)
     return "flexible";
   case BodyKind::sph_solid:
     return "sph-solid";
+  case BodyKind::fmu:
+    return "fmu";
   }
   return "?";
 }
@@ -226,6 +231,8 @@ std::unique_ptr<CoupledBody<2>> make_coupled_body(const BodyDescription& d, cons
     return make_flexible(d, gravity);
   case BodyKind::sph_solid:
     return make_sph_solid(d, gravity);
+  case BodyKind::fmu:
+    return make_fmu_body(d, gravity);
   }
   throw std::logic_error("make_coupled_body: unknown kind");
 }

@@ -111,6 +111,7 @@ public:
       }
     for (const auto& name : vars.set_names())
     {
+      set_nodes_.push_back(data.node_sets.at(name));
       set_slots_.emplace_back();
       for (int node : data.node_sets.at(name))
         set_slots_.back().push_back(slot[node]);
@@ -183,6 +184,15 @@ public:
       return b.node_position(b.skin_node_ids()[v.index])(v.component);
     case Role::skin_velocity:
       return b.node_velocity(b.skin_node_ids()[v.index])(v.component);
+    case Role::set_position:
+    {
+      double sum = 0;
+      for (int node : set_nodes_[v.index])
+        sum += b.node_position(node)(v.component);
+      return sum / double(set_nodes_[v.index].size());
+    }
+    case Role::linear_momentum:
+      return b.linear_momentum()(v.component);
     case Role::kinetic_energy:
       return b.kinetic_energy();
     case Role::strain_energy:
@@ -206,7 +216,7 @@ private:
   mbs::MultibodySystem<dim> system_;
   mbs::FloatingFrameBody<dim>* body_ = nullptr;
   std::vector<int> load_nodes_;
-  std::vector<std::vector<int>> set_slots_;
+  std::vector<std::vector<int>> set_nodes_, set_slots_;
   std::vector<int> skin_slots_;
   std::vector<Vector> load_forces_;
 };

@@ -145,6 +145,15 @@ BodyVariables::BodyVariables(const ReducedBodyData& body)
     for (int d = 0; d < dim; ++d)
       add(real("skin.velocity[" + std::to_string(i) + "]." + axis[d], Causality::output, 0,
                Role::skin_velocity, i, d, "m/s", "skin node velocity, world axes"));
+  for (std::size_t s = 0; s < set_names_.size(); ++s)
+    for (int d = 0; d < dim; ++d)
+      add(real("set." + set_names_[s] + ".position." + axis[d], Causality::output, 0,
+               Role::set_position, static_cast<int>(s), d, "m",
+               "mean position of the nodes of set '" + set_names_[s] + "', world axes"));
+  const std::string momentum_unit = dim == 2 ? "N.s/m" : "N.s";
+  for (int d = 0; d < dim; ++d)
+    add(real(std::string("linear_momentum.") + axis[d], Causality::output, 0, Role::linear_momentum,
+             0, d, momentum_unit, "linear momentum of the body"));
   add(real("kinetic_energy", Causality::output, 0, Role::kinetic_energy, 0, 0, energy_unit,
            "kinetic energy of the body"));
   add(real("strain_energy", Causality::output, 0, Role::strain_energy, 0, 0, energy_unit,

@@ -17,22 +17,22 @@ namespace chipflex::fmu
 enum class Role
 {
   // parameters (fixed after initialisation)
-  clamped,             ///< Boolean: frame fixed to ground at its initial pose
-  step_size,           ///< largest internal step, s
-  rho_infinity,        ///< generalised-alpha spectral radius at infinite frequency
-  damping,             ///< Integer: 0 none, 1 Rayleigh, 2 modal
-  rayleigh_alpha,      ///< 1/s
-  rayleigh_beta,       ///< s
-  modal_damping_ratio, ///< -
-  gravity,             ///< component
-  initial_position,    ///< component
-  initial_rotation,    ///< 2D: angle (component 0); 3D: rotation vector component
-                    // inputs (held over a communication step)
-  frame_force,  ///< component
-  frame_moment, ///< component (2D: one, about z)
-  set_force,    ///< index = node set number (alphabetical), component; shared equally
-  skin_force,   ///< index = skin node number, component
-              // outputs
+  clamped,                ///< Boolean: frame fixed to ground at its initial pose
+  step_size,              ///< largest internal step, s
+  rho_infinity,           ///< generalised-alpha spectral radius at infinite frequency
+  damping,                ///< Integer: 0 none, 1 Rayleigh, 2 modal
+  rayleigh_alpha,         ///< 1/s
+  rayleigh_beta,          ///< s
+  modal_damping_ratio,    ///< -
+  gravity,                ///< component
+  initial_position,       ///< component
+  initial_rotation,       ///< 2D: angle (component 0); 3D: rotation vector component
+                          // inputs (held over a communication step)
+  frame_force,            ///< component
+  frame_moment,           ///< component (2D: one, about z)
+  set_force,              ///< index = node set number (alphabetical), component; shared equally
+  skin_force,             ///< index = skin node number, component
+                          // outputs
   frame_position,         ///< component
   frame_orientation,      ///< 2D: angle; 3D: quaternion w, x, y, z
   frame_velocity,         ///< component
@@ -41,6 +41,8 @@ enum class Role
   modal_velocity,         ///< index = mode
   skin_position,          ///< index = skin node number, component
   skin_velocity,          ///< index = skin node number, component
+  set_position,           ///< index = node set number, component: mean of the set's nodes
+  linear_momentum,        ///< component
   kinetic_energy,
   strain_energy,
   // constants (Integer outputs): the skin's geometry for an importer that couples it

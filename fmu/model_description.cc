@@ -70,6 +70,10 @@ const char* base_unit(const std::string& unit)
     return "kg=\"1\" s=\"-2\"";
   if (unit == "N.m" || unit == "J")
     return "kg=\"1\" m=\"2\" s=\"-2\"";
+  if (unit == "N.s")
+    return "kg=\"1\" m=\"1\" s=\"-1\"";
+  if (unit == "N.s/m")
+    return "kg=\"1\" s=\"-1\"";
   if (unit == "J/m")
     return "kg=\"1\" m=\"1\" s=\"-2\"";
   return nullptr;

@@ -12,6 +12,7 @@
 //  * bad input gives FMI status codes and a logged message, never a crash.
 
 #include "common/reduced_body_file.h"
+#include "coupling/body_factory.h"
 #include "fmu/fmu_export.h"
 #include "fmu_loader.h"
 #include "mbs/multibody_system.h"
@@ -398,4 +399,83 @@ TEST_CASE("Bad input to the FMU gives FMI status codes and a logged message", "[
   CHECK(fmi.DoStep(c, 2e-3, 1e-3, fmi2True) == fmi2Error);
   fmi.FreeInstance(c);
   CHECK(fmi.DoStep(nullptr, 0, 1e-3, fmi2True) == fmi2Error);
+}
+
+TEST_CASE("The fmu body kind couples an FMU's skin like the flexible body, with checkpoints",
+          "[fmu][coupling]")
+{
+  // The same truss body as a `flexible` and as an `fmu` coupled body: equal skin faces,
+  // positions and velocities under the same skin forces (same body and integrator behind
+  // the FMI calls: 1e-12 of the motion), and restore(state()) through
+  // fmi2SerializeFMUstate repeats the steps exactly.
+  TempFolder tmp;
+  mbs::test::TrussBeamSpec spec;
+  spec.n_cells = 8;
+  spec.n_modes = 3;
+  const auto beam = mbs::test::make_truss_beam(spec);
+  coupling::BodyDescription d;
+  d.name = "beam";
+  d.position = Eigen::Vector2d(0.1, 0.2);
+  d.angle = 0.3;
+  d.body_file = tmp.path + "/body.h5";
+  d.fmu_file = export_body(beam.body, tmp.path);
+  d.rayleigh_stiffness = 1e-4;
+  d.max_step = 2e-5;
+  const Eigen::Vector2d gravity(0, -9.81);
+  d.kind = coupling::BodyKind::flexible;
+  auto flexible = coupling::make_coupled_body(d, gravity);
+  d.kind = coupling::BodyKind::fmu;
+  auto fmu_body = coupling::make_coupled_body(d, gravity);
+  CHECK(fmu_body->kind() == "fmu");
+  REQUIRE(fmu_body->skin().n_skin_nodes() == flexible->skin().n_skin_nodes());
+  CHECK(fmu_body->skin().skin_faces() == flexible->skin().skin_faces());
+  const std::size_t n = flexible->skin().n_skin_nodes();
+  std::vector<Eigen::Vector2d> forces(n);
+  for (std::size_t i = 0; i < n; ++i)
+    forces[i] = Eigen::Vector2d(0.1 * std::sin(double(i)), -0.2);
+  std::vector<Eigen::Vector2d> xa, xb, va, vb;
+  double diff = 0, moved = 0;
+  flexible->skin().skin_positions(xa);
+  const auto start = xa;
+  std::vector<double> saved;
+  std::vector<Eigen::Vector2d> after_save;
+  for (int s = 0; s < 40; ++s)
+  {
+    if (s == 20)
+      saved = fmu_body->state();
+    for (auto* b : {flexible.get(), fmu_body.get()})
+    {
+      b->skin().set_skin_forces(forces);
+      b->advance(1e-4);
+    }
+    flexible->skin().skin_positions(xa);
+    fmu_body->skin().skin_positions(xb);
+    flexible->skin().skin_velocities(va);
+    fmu_body->skin().skin_velocities(vb);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      diff = std::max(diff, (xa[i] - xb[i]).norm());
+      moved = std::max(moved, (xa[i] - start[i]).norm());
+      diff = std::max(diff, 1e-4 * (va[i] - vb[i]).norm());
+    }
+    if (s == 39)
+      after_save = xb;
+  }
+  WARN(
+      "fmu vs flexible skin: " << diff << " m of " << moved << " m motion; probe "
+                               << (fmu_body->probe_position() - flexible->probe_position()).norm());
+  CHECK(moved > 1e-4);
+  CHECK(diff <= 1e-12 * moved);
+  CHECK((fmu_body->probe_position() - flexible->probe_position()).norm() <= 1e-12 * moved);
+  CHECK((fmu_body->linear_momentum() - flexible->linear_momentum()).norm() <=
+        1e-9 * flexible->linear_momentum().norm() + 1e-15);
+  fmu_body->restore(saved);
+  for (int s = 20; s < 40; ++s)
+  {
+    fmu_body->skin().set_skin_forces(forces);
+    fmu_body->advance(1e-4);
+  }
+  fmu_body->skin().skin_positions(xb);
+  for (std::size_t i = 0; i < n; ++i)
+    CHECK(xb[i] == after_save[i]);
 }
