@@ -17,4 +17,5 @@ int run_command(const Arguments& args);      // apps/run_command.cc
 int simulate_command(const Arguments& args); // apps/simulate_command.cc
 int bench_command(const Arguments& args);    // apps/bench_command.cc
 int plot_command(const Arguments& args);     // apps/plot_command.cc
+int export_command(const Arguments& args);   // apps/export_command.cc
 } // namespace chipflex::apps

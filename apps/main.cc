@@ -28,6 +28,7 @@ const Subcommand subcommands[] = {
      chipflex::apps::simulate_command},
     {"bench", "run a benchmark and print its figures", chipflex::apps::bench_command},
     {"plot", "plot gate results against experiment (PNG)", chipflex::apps::plot_command},
+    {"export", "export a body as an FMI 2.0 FMU or as SID", chipflex::apps::export_command},
 };
 
 void print_usage(std::ostream& out)

@@ -66,6 +66,9 @@ void CoSimulation<dim>::enable_contact(const ContactParameters& parameters)
   for (auto& c : bodies_)
   {
     CoupledBody<dim>* body = c.body;
+    if (std::isnan(body->mass()))
+      throw InputError("body '" + c.name + "'",
+                       "its mass is unknown (an FMU body), so it cannot take part in contact");
     if (std::isfinite(body->mass()))
       c.contact_id = contact_->add_body(body->skin(), body->mass(), c.name,
                                         [body](double dt) { return body->contact_lead(dt); });
