@@ -434,9 +434,17 @@ TEST_CASE("The fmu body kind couples an FMU's skin like the flexible body, with 
   body->clamp_to_ground();
   auto* skin = body.get();
   system->add_body(std::move(body));
+  const std::vector<int> tip = skin->node_set("tip");
   std::unique_ptr<coupling::CoupledBody<2>> flexible =
-      std::make_unique<coupling::MultibodyCoupledBody<2>>("flexible", std::move(system), *skin,
-                                                          d.max_step);
+      std::make_unique<coupling::MultibodyCoupledBody<2>>(
+          "flexible", std::move(system), *skin, d.max_step,
+          [tip](const mbs::MultibodySystem<2>& s)
+          {
+            Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+            for (int n : tip)
+              sum += s.body(0).node_position(n);
+            return Eigen::Vector2d(sum / double(tip.size()));
+          });
   auto fmu_body = coupling::make_fmu_body(d, gravity);
   CHECK(fmu_body->kind() == "fmu");
   REQUIRE(fmu_body->skin().n_skin_nodes() == flexible->skin().n_skin_nodes());
