@@ -106,13 +106,7 @@ GmshMeshData read_gmsh_mesh(const std::string& path)
       path,
       [&]
       {
-        // gmsh keeps its last error message; only a new one belongs to this file.
-        std::string before, error;
-        gmsh::logger::getLastError(before);
-        gmsh::open(path);
-        gmsh::logger::getLastError(error);
-        if (!error.empty() && error != before)
-          throw InputError(path, "not a readable gmsh mesh (" + error + ")");
+        meshes::open_mesh_file(path);
 
         for (int d = 3; d >= 2 && mesh.dim == 0; --d)
         {

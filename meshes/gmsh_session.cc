@@ -37,6 +37,17 @@ std::string last_gmsh_error(const std::string& fallback)
 }
 } // namespace
 
+void open_mesh_file(const std::string& path)
+{
+  // gmsh keeps its last error message; only a new one belongs to this file.
+  std::string before, error;
+  gmsh::logger::getLastError(before);
+  gmsh::open(path);
+  gmsh::logger::getLastError(error);
+  if (!error.empty() && error != before)
+    throw InputError(path, "not a readable gmsh mesh (" + error + ")");
+}
+
 void ensure_gmsh()
 {
   static GmshLifetime lifetime;

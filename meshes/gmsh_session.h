@@ -11,6 +11,10 @@ namespace chipflex::meshes
 /// Initialises gmsh on first use (terminal output off); finalised at program exit.
 void ensure_gmsh();
 
+/// Inside with_gmsh_model: opens a mesh file into the model; InputError naming the file
+/// if gmsh reports an error while reading it.
+void open_mesh_file(const std::string& path);
+
 /// Runs `action` on a fresh gmsh model; any gmsh failure becomes InputError(where, message).
 void with_gmsh_model(const std::string& where, const std::function<void()>& action);
 } // namespace chipflex::meshes

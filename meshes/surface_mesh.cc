@@ -125,12 +125,7 @@ SurfaceMesh<dim> read_msh(const std::string& path, const std::string& group)
       path,
       [&]
       {
-        std::string before, error;
-        gmsh::logger::getLastError(before);
-        gmsh::open(path);
-        gmsh::logger::getLastError(error);
-        if (!error.empty() && error != before)
-          throw InputError(path, "not a readable gmsh mesh (" + error + ")");
+        open_mesh_file(path);
         std::vector<std::size_t> node_tags;
         std::vector<double> coords, parametric;
         gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);

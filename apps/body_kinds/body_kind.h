@@ -114,6 +114,25 @@ public:
                                                           const BodyContext<3>& context) const = 0;
 };
 
+/// A kind that builds in 2D and 3D from one member template of `Kind`:
+///   template <int dim> static std::unique_ptr<coupling::CoupledBody<dim>>
+///   make(const BodyKeys&, const BodyContext<dim>&);
+template <class Kind>
+class AnyDimensionKind : public BodyKind
+{
+public:
+  std::unique_ptr<coupling::CoupledBody<2>> build(const BodyKeys& keys,
+                                                  const BodyContext<2>& context) const override
+  {
+    return Kind::template make<2>(keys, context);
+  }
+  std::unique_ptr<coupling::CoupledBody<3>> build(const BodyKeys& keys,
+                                                  const BodyContext<3>& context) const override
+  {
+    return Kind::template make<3>(keys, context);
+  }
+};
+
 /// Every registered kind, in the order of their names.
 std::vector<const BodyKind*> body_kinds();
 /// The kind called `name`; InputError at `where` listing the kinds otherwise.

@@ -13,7 +13,7 @@ namespace chipflex::apps
 {
 namespace
 {
-class FlexibleKind : public BodyKind
+class FlexibleKind : public AnyDimensionKind<FlexibleKind>
 {
 public:
   std::string name() const override { return "flexible"; }
@@ -34,18 +34,6 @@ public:
                  "field, so that large deflections foreshorten the beam.");
   }
 
-  std::unique_ptr<coupling::CoupledBody<2>> build(const BodyKeys& keys,
-                                                  const BodyContext<2>& context) const override
-  {
-    return make<2>(keys, context);
-  }
-  std::unique_ptr<coupling::CoupledBody<3>> build(const BodyKeys& keys,
-                                                  const BodyContext<3>& context) const override
-  {
-    return make<3>(keys, context);
-  }
-
-private:
   template <int dim>
   static std::unique_ptr<coupling::CoupledBody<dim>> make(const BodyKeys& keys,
                                                           const BodyContext<dim>& context)

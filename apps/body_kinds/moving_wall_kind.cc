@@ -14,7 +14,7 @@ namespace chipflex::apps
 {
 namespace
 {
-class MovingWallKind : public BodyKind
+class MovingWallKind : public AnyDimensionKind<MovingWallKind>
 {
 public:
   std::string name() const override { return "moving wall"; }
@@ -35,18 +35,6 @@ public:
                  "Reverse the faces of `surface` (the fluid lies on the side of the normal).");
   }
 
-  std::unique_ptr<coupling::CoupledBody<2>> build(const BodyKeys& keys,
-                                                  const BodyContext<2>& context) const override
-  {
-    return make<2>(keys, context);
-  }
-  std::unique_ptr<coupling::CoupledBody<3>> build(const BodyKeys& keys,
-                                                  const BodyContext<3>& context) const override
-  {
-    return make<3>(keys, context);
-  }
-
-private:
   template <int dim>
   static std::unique_ptr<coupling::CoupledBody<dim>> make(const BodyKeys& keys,
                                                           const BodyContext<dim>& context)

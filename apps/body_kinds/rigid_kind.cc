@@ -15,7 +15,7 @@ namespace chipflex::apps
 {
 namespace
 {
-class RigidKind : public BodyKind
+class RigidKind : public AnyDimensionKind<RigidKind>
 {
 public:
   std::string name() const override { return "rigid"; }
@@ -44,17 +44,6 @@ public:
     keys.declare("body file", "", "text", "HDF5 body file from `chipflex reduce`.");
     keys.declare("skin spacing", "0", "double >= 0",
                  "Primitives: largest distance of skin nodes, m; 0: the fluid's spacing.");
-  }
-
-  std::unique_ptr<coupling::CoupledBody<2>> build(const BodyKeys& keys,
-                                                  const BodyContext<2>& context) const override
-  {
-    return make<2>(keys, context);
-  }
-  std::unique_ptr<coupling::CoupledBody<3>> build(const BodyKeys& keys,
-                                                  const BodyContext<3>& context) const override
-  {
-    return make<3>(keys, context);
   }
 
 private:
@@ -116,6 +105,7 @@ private:
     return s;
   }
 
+public:
   template <int dim>
   static std::unique_ptr<coupling::CoupledBody<dim>> make(const BodyKeys& keys,
                                                           const BodyContext<dim>& context)
