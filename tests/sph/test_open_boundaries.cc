@@ -1,0 +1,218 @@
+// Open flow boundaries (sph/open_boundary.h): the particle bookkeeping of inlets and
+// outlets, bitwise restart with them, a 3D duct, and (validation) plane Poiseuille flow
+// driven by a velocity inlet and a pressure outlet, the case of cases/channel_2d.prm.
+
+#include "common/hdf5_file.h"
+#include "sph/case_setup.h"
+#include "sph/fluid_solver.h"
+
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <iostream>
+#include <set>
+
+using namespace chipflex::sph;
+
+namespace
+{
+/// A channel between plates y = 0 and y = H (2D) or a square duct (3D), flow along +x
+/// from the inlet plane x = 0 to the outlet plane x = L, 4-layer buffers beyond both, the
+/// fluid starting at the inlet speed U. Laminar viscosity nu = U H / Re, c0 = 40 U.
+template <int dim>
+CaseDescription<dim> channel(double H, double L, int across, double U, double Re,
+                             TimeScheme scheme = TimeScheme::verlet)
+{
+  using Vector = Eigen::Matrix<double, dim, 1>;
+  const double dp = H / across, buffer = 4 * dp;
+  CaseDescription<dim> c;
+  auto& f = c.fluid;
+  f.particle_spacing = dp;
+  f.gravity = Vector::Zero();
+  f.speed_of_sound = 40 * U;
+  f.viscosity = ViscosityModel::laminar;
+  f.kinematic_viscosity = U * H / Re;
+  f.scheme = scheme;
+  c.hydrostatic_start = false;
+  Vector lo = Vector::Zero(), hi = Vector::Constant(H);
+  hi[0] = L;
+  c.fluid_blocks.push_back({lo, hi});
+  c.initial_velocity = Vector::Zero();
+  c.initial_velocity[0] = U;
+  c.tank.min = lo;
+  c.tank.max = hi;
+  c.tank.min[0] = -buffer;
+  c.tank.max[0] = L + buffer;
+  c.tank.open_top = false;
+  c.tank.open_axis = 0;
+  OpenBoundary<dim> inlet, outlet;
+  inlet.name = "inlet";
+  inlet.kind = OpenBoundaryKind::inlet;
+  inlet.box_min = lo, inlet.box_max = hi;
+  inlet.box_min[0] = -buffer, inlet.box_max[0] = 0;
+  inlet.velocity = U;
+  outlet.name = "outlet";
+  outlet.kind = OpenBoundaryKind::outlet;
+  outlet.box_min = lo, outlet.box_max = hi;
+  outlet.box_min[0] = L, outlet.box_max[0] = L + buffer;
+  c.open_boundaries = {inlet, outlet};
+  return c;
+}
+
+template <int dim>
+std::size_t count_buffer(const FluidSolver<dim>& fluid, int zone)
+{
+  return fluid.open_boundary_flow(zone).buffer_particles;
+}
+
+/// The bookkeeping that must hold after every step: every fluid particle the run ever
+/// had is in it, lost or out through a zone; ids are unique and below the created count.
+template <int dim>
+void require_balance(const FluidSolver<dim>& fluid, std::size_t initial)
+{
+  REQUIRE(fluid.n_fluid() + fluid.lost_particles().size() + fluid.n_outflow() ==
+          fluid.n_fluid_created());
+  REQUIRE(fluid.n_fluid_created() == initial + fluid.n_inflow());
+  std::set<std::uint32_t> ids;
+  const auto& p = fluid.particles();
+  for (std::size_t i = fluid.n_boundary(); i < fluid.n_particles(); ++i)
+  {
+    REQUIRE(p.id[i] < fluid.n_fluid_created());
+    ids.insert(p.id[i]);
+  }
+  REQUIRE(ids.size() == fluid.n_fluid());
+}
+} // namespace
+
+TEST_CASE("open boundaries create and remove particles with exact bookkeeping",
+          "[sph][open boundaries]")
+{
+  // 10 particles across, so the inlet buffer holds 4 x 10 particles all the time and
+  // every crossing creates exactly one particle: after t, U t / dp columns of 10.
+  auto c = channel<2>(0.01, 0.03, 10, 0.1, 5);
+  auto fluid = build_fluid(c);
+  fluid->initialise();
+  const std::size_t initial = fluid->n_fluid();
+  REQUIRE(initial == 30 * 10 + 2 * 4 * 10);
+  REQUIRE(count_buffer(*fluid, 0) == 40);
+  REQUIRE(count_buffer(*fluid, 1) == 40);
+  while (fluid->time() < 0.05)
+  {
+    fluid->step();
+    require_balance(*fluid, initial);
+    REQUIRE(count_buffer(*fluid, 0) == 40);
+  }
+  // The inlet's buffer moves rigidly at U: created = 10 * floor(U t / dp) (+-1 column
+  // for the step in which the crossing happens).
+  const double columns = 0.1 * fluid->time() / 0.001;
+  CHECK(std::abs(double(fluid->n_inflow()) - 10 * columns) <= 10);
+  CHECK(fluid->n_inflow() >= 40);
+  CHECK(fluid->n_outflow() >= 30);
+  CHECK(fluid->lost_particles().empty());
+  // Steady mass: what came in went out (the fluid starts at U everywhere).
+  CHECK(std::abs(double(fluid->n_inflow()) - double(fluid->n_outflow())) <= 20);
+  // The inlet's mass flow is the prescribed rho0 U H exactly (uniform profile).
+  CHECK(fluid->open_boundary_flow(0).mass_flow == Approx(1000 * 0.1 * 0.01).epsilon(1e-6));
+}
+
+TEST_CASE("a run with open boundaries restarts bitwise", "[sph][open boundaries][restart]")
+{
+  for (const auto scheme :
+       {TimeScheme::verlet, TimeScheme::symplectic, TimeScheme::position_verlet})
+  {
+    DYNAMIC_SECTION("scheme " << int(scheme))
+    {
+      auto c1 = channel<2>(0.01, 0.02, 10, 0.1, 5, scheme);
+      c1.fluid.verlet_euler_every = 7;
+      auto whole = build_fluid(c1);
+      const std::string path = "sph_open_restart_" + std::to_string(int(scheme)) + ".h5";
+      // Long enough for creations and removals before and after the checkpoint.
+      for (int s = 0; s < 250; ++s)
+        whole->step();
+      REQUIRE(whole->n_inflow() > 0);
+      REQUIRE(whole->n_outflow() > 0);
+      {
+        chipflex::Hdf5File h5(path, chipflex::Hdf5File::Mode::create);
+        whole->save(h5, "/fluid");
+      }
+      const auto inflow_at_save = whole->n_inflow();
+      for (int s = 0; s < 250; ++s)
+        whole->step();
+      REQUIRE(whole->n_inflow() > inflow_at_save);
+
+      auto c2 = channel<2>(0.01, 0.02, 10, 0.1, 5, scheme);
+      c2.fluid.verlet_euler_every = 7;
+      auto restarted = build_fluid(c2);
+      {
+        chipflex::Hdf5File h5(path, chipflex::Hdf5File::Mode::read);
+        restarted->load(h5, "/fluid");
+      }
+      std::remove(path.c_str());
+      for (int s = 0; s < 250; ++s)
+        restarted->step();
+      REQUIRE(restarted->n_particles() == whole->n_particles());
+      REQUIRE(restarted->time() == whole->time());
+      REQUIRE(restarted->n_inflow() == whole->n_inflow());
+      REQUIRE(restarted->n_outflow() == whole->n_outflow());
+      REQUIRE(restarted->n_fluid_created() == whole->n_fluid_created());
+      const auto& p = whole->particles();
+      const auto& q = restarted->particles();
+      std::size_t differences = 0;
+      for (std::size_t i = 0; i < p.size(); ++i)
+      {
+        bool same = p.id[i] == q.id[i] && p.density[i] == q.density[i] && p.zone[i] == q.zone[i];
+        for (int d = 0; d < 2; ++d)
+          same =
+              same && p.position[d][i] == q.position[d][i] && p.velocity[d][i] == q.velocity[d][i];
+        differences += !same;
+      }
+      CHECK(differences == 0);
+    }
+  }
+}
+
+TEST_CASE("a restart refuses a checkpoint without the case's open boundaries",
+          "[sph][open boundaries][restart]")
+{
+  auto closed = channel<2>(0.01, 0.02, 10, 0.1, 5);
+  closed.open_boundaries.clear();
+  closed.tank.open_axis = -1;
+  auto a = build_fluid(closed);
+  a->step();
+  const std::string path = "sph_open_refuse.h5";
+  {
+    chipflex::Hdf5File h5(path, chipflex::Hdf5File::Mode::create);
+    a->save(h5, "/fluid");
+  }
+  auto open = channel<2>(0.01, 0.02, 10, 0.1, 5);
+  auto b = build_fluid(open);
+  chipflex::Hdf5File h5(path, chipflex::Hdf5File::Mode::read);
+  CHECK_THROWS_WITH(b->load(h5, "/fluid"), Catch::Contains("no open boundaries"));
+  std::remove(path.c_str());
+}
+
+TEST_CASE("a 3D duct with an inlet and an outlet keeps its mass balance", "[sph][open boundaries]")
+{
+  // 6 x 6 particles across a 6 mm square duct, 12 mm long, U = 0.1 m/s for 0.04 s (four
+  // buffer layers' worth of inflow).
+  auto c = channel<3>(0.006, 0.012, 6, 0.1, 5);
+  auto fluid = build_fluid(c);
+  fluid->initialise();
+  const std::size_t initial = fluid->n_fluid();
+  REQUIRE(initial == 12 * 36 + 2 * 4 * 36);
+  while (fluid->time() < 0.04)
+  {
+    fluid->step();
+    require_balance(*fluid, initial);
+    REQUIRE(count_buffer(*fluid, 0) == 4 * 36);
+  }
+  // created = 36 per column crossing, U t / dp columns (+-1 column).
+  const double columns = 0.1 * fluid->time() / 0.001;
+  CHECK(std::abs(double(fluid->n_inflow()) - 36 * columns) <= 36);
+  CHECK(fluid->n_outflow() > 0);
+  CHECK(std::abs(double(fluid->n_inflow()) - double(fluid->n_outflow())) <= 2 * 36);
+  CHECK(fluid->lost_particles().empty());
+  // The fluid neither piles up nor empties: its count stays within two columns.
+  CHECK(std::abs(double(fluid->n_fluid()) - double(initial)) <= 2 * 36);
+  // The inlet's mass flow is rho0 U A.
+  CHECK(fluid->open_boundary_flow(0).mass_flow == Approx(1000 * 0.1 * 0.006 * 0.006).epsilon(1e-6));
+}
