@@ -216,3 +216,72 @@ TEST_CASE("a 3D duct with an inlet and an outlet keeps its mass balance", "[sph]
   // The inlet's mass flow is rho0 U A.
   CHECK(fluid->open_boundary_flow(0).mass_flow == Approx(1000 * 0.1 * 0.006 * 0.006).epsilon(1e-6));
 }
+
+TEST_CASE("open-boundary channel reaches the Poiseuille profile and inflow equals outflow",
+          "[sph][open boundaries][validation]")
+{
+  // cases/channel_2d.prm: plates 20 particles apart (H = 0.02 m, dp = 1 mm), inlet plane
+  // x = 0, outlet plane x = L = 5 H, uniform inflow U = 0.1 m/s, Re = U H / nu = 5,
+  // c0 = 40 U, outlet at p = 0, to t = 2 s = 10 H / U (the viscous time H^2 / nu is
+  // 1 s; the slowest profile mode decays as exp(-pi^2 nu t / H^2)).
+  // Plane Poiseuille flow (e.g. White, Viscous Fluid Flow, 3rd ed., sec. 3-3):
+  //   u(y) = 6 U y (H - y) / H^2,  u_max = 1.5 U,  dp/dx = -12 rho nu U / H^2.
+  // The entrance length at Re 5 is below one H; the profile is taken in 2 H <= x <= 3 H.
+  const double H = 0.02, L = 0.1, U = 0.1, Re = 5, rho0 = 1000, end = 2.0;
+  auto c = channel<2>(H, L, 20, U, Re);
+  auto fluid = build_fluid(c);
+  const int rows = 20;
+  std::vector<double> sum_u(rows, 0), sum_y(rows, 0);
+  std::vector<double> count(rows, 0);
+  double inflow = 0, outflow = 0;
+  long samples = 0;
+  while (fluid->time() < end)
+  {
+    fluid->step();
+    if (fluid->time() < 0.9 * end)
+      continue;
+    // The last tenth: the profile from every particle in the window, the flows from the
+    // buffers (mass per buffer depth times the buffer particles' speeds).
+    const auto& p = fluid->particles();
+    for (std::size_t i = fluid->n_boundary(); i < fluid->n_particles(); ++i)
+    {
+      const double x = p.position[0][i], y = p.position[1][i];
+      if (x < 2 * H || x > 3 * H || fluid->is_buffer(i))
+        continue;
+      const int row = std::clamp(int(y / (H / rows)), 0, rows - 1);
+      sum_u[row] += p.velocity[0][i];
+      sum_y[row] += y;
+      count[row] += 1;
+    }
+    inflow += fluid->open_boundary_flow(0).mass_flow;
+    outflow += fluid->open_boundary_flow(1).mass_flow;
+    ++samples;
+  }
+  REQUIRE(samples > 100);
+  REQUIRE(fluid->lost_particles().empty());
+  double worst = 0, u_max = 0;
+  std::cout << "Poiseuille channel, 2 H <= x <= 3 H, t in [" << 0.9 * end << ", " << end
+            << "] s:\n   y/H    u_SPH/U  u_exact/U\n";
+  for (int r = 0; r < rows; ++r)
+  {
+    REQUIRE(count[r] > 0);
+    const double y = sum_y[r] / count[r], u = sum_u[r] / count[r];
+    const double exact = 6 * U * y * (H - y) / (H * H);
+    worst = std::max(worst, std::abs(u - exact));
+    u_max = std::max(u_max, u);
+    std::printf("  %6.3f  %8.4f  %8.4f\n", y / H, u / U, exact / U);
+  }
+  inflow /= double(samples);
+  outflow /= double(samples);
+  std::cout << "largest deviation " << 100 * worst / (1.5 * U)
+            << " % of u_max; u_max/U = " << u_max / U << "; inflow " << inflow
+            << " kg/(s m), outflow " << outflow << " kg/(s m) (" << 100 * (outflow / inflow - 1)
+            << " %); particles created " << fluid->n_inflow() << ", removed " << fluid->n_outflow()
+            << std::endl;
+  // Every row within 5 % of the exact peak speed, the peak itself within 5 %.
+  CHECK(worst <= 0.05 * 1.5 * U);
+  CHECK(u_max == Approx(1.5 * U).epsilon(0.05));
+  // Inflow rho0 U H, outflow within 1 % of it over the last tenth.
+  CHECK(inflow == Approx(rho0 * U * H).epsilon(1e-6));
+  CHECK(outflow == Approx(inflow).epsilon(0.01));
+}
