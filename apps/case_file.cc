@@ -51,6 +51,11 @@ void declare_keys(ParameterHandler& prm)
                     "not bind and fly apart (experimental: fluid in a corner of Lennard-Jones "
                     "walls counts as spray, docs/sph.md); keep: the plain Tait law everywhere (as "
                     "DualSPHysics).");
+  prm.declare_entry("no slip walls", "false", Bool(),
+                    "Dummy wall particles take 2 v_wall - v_fluid at their mirror point across "
+                    "the face (the no-slip velocity of the modified DBC, English et al. 2022), "
+                    "so the fluid sticks at the wall face rather than at the first dummy "
+                    "layer; false: the wall's velocity (DualSPHysics' DBC).");
   prm.declare_entry("hydrostatic start", "true", Bool(),
                     "Start each fluid block with its hydrostatic density (no initial wave).");
   prm.leave_subsection();
@@ -275,6 +280,7 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c)
     f.minimum_density_ratio = limits[0] / f.reference_density;
     f.maximum_density_ratio = limits[1] / f.reference_density;
   }
+  f.no_slip_walls = prm.get_bool("no slip walls");
   c.hydrostatic_start = prm.get_bool("hydrostatic start");
   prm.leave_subsection();
 

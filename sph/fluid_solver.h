@@ -212,6 +212,7 @@ private:
   void transfer_open_boundaries();
   void prescribe_open_boundaries();
   void freeze_open_boundaries();
+  void mirror_wall_velocities();
   float spray_fill_limit() const;
   /// The fluid particle with the largest acceleration of the last force pass.
   std::size_t most_accelerated_particle() const;

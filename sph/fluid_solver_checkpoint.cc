@@ -192,7 +192,8 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
       throw InputError(where, "wrong array size in checkpoint");
     for (std::size_t i = 0; i < n; ++i)
     {
-      if (zone[i] < 0 || std::size_t(zone[i]) > zones_.size() || (zone[i] && i < p.n_boundary))
+      if (zone[i] < 0 || zone[i] > 0xff || std::size_t(zone[i] & zone_index_mask) > zones_.size() ||
+          (zone[i] && i < p.n_boundary))
         throw InputError(where, "checkpoint names an open boundary the case has not");
       p.zone[i] = std::uint8_t(zone[i]);
     }

@@ -120,6 +120,8 @@ void FluidSolver<dim>::force_pass()
   sort_and_bin();
   if (!zones_.empty())
     prescribe_open_boundaries();
+  if (parameters_.no_slip_walls)
+    mirror_wall_velocities();
   auto& p = particles_;
   auto& im = *impl_;
   const std::size_t nb = p.n_boundary, n = p.size();

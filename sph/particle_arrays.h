@@ -23,6 +23,8 @@ namespace chipflex::sph
 /// up to 200k particles, so a step has one parallel region below that.
 inline constexpr std::size_t parallel_threshold = 2000;
 inline constexpr std::size_t light_parallel_threshold = 200000;
+/// ParticleArrays::zone: the zone number k + 1 in the low bits, a flag in the top bit.
+inline constexpr std::uint8_t zone_index_mask = 0x7f, zone_respawned = 0x80;
 
 template <int dim>
 struct ParticleArrays
@@ -43,7 +45,8 @@ struct ParticleArrays
   /// pass cuts the tension of particles below FluidSolver's spray threshold.
   std::vector<float> fill;
   /// Open boundaries only (empty otherwise): 0 for a fluid particle, k + 1 for a buffer
-  /// particle of zone k (sph/open_boundary.h).
+  /// particle of zone k (sph/open_boundary.h), plus zone_respawned for an inlet particle
+  /// that has flowed back into its buffer (its replacement exists already).
   std::vector<std::uint8_t> zone;
 
   // Results of the last force pass (not permuted: recomputed after every sort).

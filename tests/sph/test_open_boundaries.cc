@@ -5,6 +5,7 @@
 #include "common/hdf5_file.h"
 #include "sph/case_setup.h"
 #include "sph/fluid_solver.h"
+#include "sph/probes.h"
 
 #include <catch2/catch.hpp>
 #include <cstdio>
@@ -99,7 +100,8 @@ TEST_CASE("open boundaries create and remove particles with exact bookkeeping",
   {
     fluid->step();
     require_balance(*fluid, initial);
-    REQUIRE(count_buffer(*fluid, 0) == 40);
+    REQUIRE(count_buffer(*fluid, 0) >= 40);
+    REQUIRE(count_buffer(*fluid, 0) <= 44); // + particles back from the fluid
   }
   // The inlet's buffer moves rigidly at U: created = 10 * floor(U t / dp) (+-1 column
   // for the step in which the crossing happens).
@@ -203,7 +205,8 @@ TEST_CASE("a 3D duct with an inlet and an outlet keeps its mass balance", "[sph]
   {
     fluid->step();
     require_balance(*fluid, initial);
-    REQUIRE(count_buffer(*fluid, 0) == 4 * 36);
+    REQUIRE(count_buffer(*fluid, 0) >= 4 * 36);
+    REQUIRE(count_buffer(*fluid, 0) <= 4 * 36 + 6);
   }
   // created = 36 per column crossing, U t / dp columns (+-1 column).
   const double columns = 0.1 * fluid->time() / 0.001;
@@ -221,7 +224,7 @@ TEST_CASE("open-boundary channel reaches the Poiseuille profile and inflow equal
           "[sph][open boundaries][validation]")
 {
   // cases/channel_2d.prm: plates 20 particles apart (H = 0.02 m, dp = 1 mm), inlet plane
-  // x = 0, outlet plane x = L = 5 H, uniform inflow U = 0.1 m/s, Re = U H / nu = 5,
+  // x = 0, outlet plane x = L = 5 H, mean inflow U = 0.1 m/s, Re = U H / nu = 5,
   // c0 = 40 U, outlet at p = 0, to t = 2 s = 10 H / U (the viscous time H^2 / nu is
   // 1 s; the slowest profile mode decays as exp(-pi^2 nu t / H^2)).
   // Plane Poiseuille flow (e.g. White, Viscous Fluid Flow, 3rd ed., sec. 3-3):
@@ -229,17 +232,27 @@ TEST_CASE("open-boundary channel reaches the Poiseuille profile and inflow equal
   // The entrance length at Re 5 is below one H; the profile is taken in 2 H <= x <= 3 H.
   const double H = 0.02, L = 0.1, U = 0.1, Re = 5, rho0 = 1000, end = 2.0;
   auto c = channel<2>(H, L, 20, U, Re);
+  // The plates with no-slip dummy particles (sph/fluid_solver_no_slip.cc): with the
+  // plain dynamic boundary the fluid sticks near the first dummy layer, half a spacing
+  // behind the faces, and this run gives u_max = 1.43 U, rows up to 9.2 % of u_max off
+  // and dp/dx 16 % low. The inflow is the parabola (a uniform one with no-slip walls
+  // leaves a velocity jump at the wall where the inlet buffer meets the plates).
+  c.fluid.no_slip_walls = true;
+  c.open_boundaries[0].profile = InletProfile::parabolic;
   auto fluid = build_fluid(c);
   const int rows = 20;
   std::vector<double> sum_u(rows, 0), sum_y(rows, 0);
   std::vector<double> count(rows, 0);
-  double inflow = 0, outflow = 0;
+  double inflow = 0, outflow = 0, pressure_a = 0, pressure_b = 0, window_flow = 0;
+  std::size_t created_at = 0, removed_at = 0, fluid_at = 0;
   long samples = 0;
   while (fluid->time() < end)
   {
     fluid->step();
     if (fluid->time() < 0.9 * end)
       continue;
+    if (samples == 0)
+      created_at = fluid->n_inflow(), removed_at = fluid->n_outflow(), fluid_at = fluid->n_fluid();
     // The last tenth: the profile from every particle in the window, the flows from the
     // buffers (mass per buffer depth times the buffer particles' speeds).
     const auto& p = fluid->particles();
@@ -250,9 +263,12 @@ TEST_CASE("open-boundary channel reaches the Poiseuille profile and inflow equal
         continue;
       const int row = std::clamp(int(y / (H / rows)), 0, rows - 1);
       sum_u[row] += p.velocity[0][i];
+      window_flow += fluid->particle_mass() * p.velocity[0][i] / H;
       sum_y[row] += y;
       count[row] += 1;
     }
+    pressure_a += sample_pressure(*fluid, Eigen::Vector2d(1.5 * H, 0.5 * H));
+    pressure_b += sample_pressure(*fluid, Eigen::Vector2d(3.5 * H, 0.5 * H));
     inflow += fluid->open_boundary_flow(0).mass_flow;
     outflow += fluid->open_boundary_flow(1).mass_flow;
     ++samples;
@@ -271,6 +287,14 @@ TEST_CASE("open-boundary channel reaches the Poiseuille profile and inflow equal
     u_max = std::max(u_max, u);
     std::printf("  %6.3f  %8.4f  %8.4f\n", y / H, u / U, exact / U);
   }
+  const double gradient = (pressure_b - pressure_a) / double(samples) / (2 * H);
+  const double gradient_exact = -12 * rho0 * (U * H / Re) * U / (H * H);
+  std::cout << "dp/dx between x = 1.5 H and 3.5 H: " << gradient << " Pa/m, exact "
+            << gradient_exact << " Pa/m (" << 100 * (gradient / gradient_exact - 1) << " %)\n";
+  std::cout << "last tenth: " << fluid->n_inflow() - created_at << " particles created, "
+            << fluid->n_outflow() - removed_at << " removed, fluid " << fluid_at << " -> "
+            << fluid->n_fluid() << "; mass flow in 2 H <= x <= 3 H "
+            << window_flow / double(samples) << " kg/(s m)\n";
   inflow /= double(samples);
   outflow /= double(samples);
   std::cout << "largest deviation " << 100 * worst / (1.5 * U)
@@ -281,7 +305,10 @@ TEST_CASE("open-boundary channel reaches the Poiseuille profile and inflow equal
   // Every row within 5 % of the exact peak speed, the peak itself within 5 %.
   CHECK(worst <= 0.05 * 1.5 * U);
   CHECK(u_max == Approx(1.5 * U).epsilon(0.05));
-  // Inflow rho0 U H, outflow within 1 % of it over the last tenth.
-  CHECK(inflow == Approx(rho0 * U * H).epsilon(1e-6));
+  // The pressure gradient (the wall shear) within 5 %.
+  CHECK(gradient == Approx(gradient_exact).epsilon(0.05));
+  // Inflow rho0 U H (the 20 rows' midpoint sum of the parabola: 1 + 1/(2 * 20^2)), the
+  // outflow within 1 % of it over the last tenth.
+  CHECK(inflow == Approx(rho0 * U * H * (1 + 1.0 / (2 * rows * rows))).epsilon(1e-6));
   CHECK(outflow == Approx(inflow).epsilon(0.01));
 }
