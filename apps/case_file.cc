@@ -55,6 +55,11 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
                     "not bind and fly apart (experimental: fluid in a corner of Lennard-Jones "
                     "walls counts as spray, docs/sph.md); keep: the plain Tait law everywhere (as "
                     "DualSPHysics).");
+  prm.declare_entry("no slip walls", "false", Bool(),
+                    "Dummy wall particles take 2 v_wall - v_fluid at their mirror point across "
+                    "the face (the no-slip velocity of the modified DBC, English et al. 2022), "
+                    "so the fluid sticks at the wall face rather than at the first dummy "
+                    "layer; false: the wall's velocity (DualSPHysics' DBC).");
   prm.declare_entry("hydrostatic start", "true", Bool(),
                     "Start each fluid block with its hydrostatic density (no initial wave).");
   prm.leave_subsection();
@@ -86,6 +91,8 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
                     "run and counted (lost_particles in the log, probes and summary). Empty: "
                     "automatic (everything plus a quarter of its size on every side).");
   prm.declare_entry("domain max", "", Anything(), "See domain min, m.");
+  prm.declare_entry("initial velocity", "", Anything(),
+                    "Velocity of the fluid blocks at t = 0 (dim components), m/s; empty: at rest.");
   prm.declare_entry("lost fraction limit", "0.01", Double(0, 1),
                     "The run stops (its last checkpoint kept) once more than this fraction of "
                     "the fluid particles has left the domain box or turned non-finite, -.");
@@ -94,6 +101,10 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
   prm.declare_entry("min corner", "0, 0", Anything(), "Inner faces of the tank walls, m.");
   prm.declare_entry("max corner", "4, 3", Anything(), "Inner faces of the tank walls, m.");
   prm.declare_entry("open top", "true", Bool(), "No lid.");
+  prm.declare_entry("open ends", "none", Selection("none|x|y|z"),
+                    "Leave out the two walls normal to this axis: a channel (2D) or duct (3D, "
+                    "with open top = false) whose fluid enters and leaves through open "
+                    "boundaries. The walls must span the buffers.");
   prm.declare_entry("wall model", "dummy particles", Selection("dummy particles|lennard jones"),
                     "dummy particles (dynamic boundary condition) or lennard jones.");
   prm.declare_entry("dummy layers", "0", Integer(0),
@@ -120,6 +131,50 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
                     "Numbers (1-based, comma-separated) of the polylines that are permeable "
                     "barriers: bodies feel them (subsection contact), the fluid does not.");
   prm.leave_subsection();
+  prm.leave_subsection();
+
+  // Open boundaries (sph/open_boundary.h, docs/sph.md "Open boundaries").
+  prm.enter_subsection("open boundaries");
+  for (const char* zone : {"inlet", "outlet"})
+  {
+    const bool inlet = std::string(zone) == "inlet";
+    prm.enter_subsection(zone);
+    prm.declare_entry("enabled", "false", Bool(),
+                      inlet ? "A velocity inlet: buffer particles at a prescribed velocity, "
+                              "density extrapolated from the fluid; new particles enter the "
+                              "fluid as buffer particles cross the plane."
+                            : "A pressure outlet: buffer particles at a prescribed pressure, "
+                              "velocity extrapolated from the fluid; particles leaving the "
+                              "buffer's far face are removed (outflow_particles).");
+    prm.declare_entry("box min", "", Anything(),
+                      "The buffer box's min corner, m (dim components). Its face on the fluid "
+                      "side is the boundary plane; across the flow it spans the section.");
+    prm.declare_entry("box max", "", Anything(), "The buffer box's max corner, m.");
+    prm.declare_entry("direction", "+x", Selection("+x|-x|+y|-y|+z|-z"),
+                      "The flow direction through the boundary (an inlet's points into the "
+                      "fluid, an outlet's out of it).");
+    prm.declare_entry("layers", "4", Integer(1),
+                      "Buffer layers: the box's depth along the flow is layers * dp (at least "
+                      "the kernel support 2h; DualSPHysics' default is 4), -.");
+    if (inlet)
+    {
+      prm.declare_entry("velocity", "0", Double(0),
+                        "Mean normal speed over the section, m/s (give this or flow rate).");
+      prm.declare_entry("flow rate", "0", Double(0),
+                        "Volume flow rate, m^3/s (2D: m^2/s per metre depth); the mean speed "
+                        "is flow rate / section area.");
+      prm.declare_entry("profile", "uniform", Selection("uniform|parabolic"),
+                        "uniform, or parabolic across the section: 2D 1.5 U (1 - eta^2) (plane "
+                        "Poiseuille), 3D 2.25 U (1 - eta1^2)(1 - eta2^2), eta in [-1, 1].");
+      prm.declare_entry("ramp time", "0", Double(0),
+                        "The speed rises as (1 - cos(pi t/T))/2 over [0, T], s; 0: at once.");
+    }
+    else
+      prm.declare_entry("pressure", "0", Double(),
+                        "Pressure at the centre of the section, Pa (gauge; hydrostatic "
+                        "across the section with gravity).");
+    prm.leave_subsection();
+  }
   prm.leave_subsection();
 
   prm.enter_subsection("probes");
@@ -239,6 +294,7 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
     f.minimum_density_ratio = limits[0] / f.reference_density;
     f.maximum_density_ratio = limits[1] / f.reference_density;
   }
+  f.no_slip_walls = prm.get_bool("no slip walls");
   c.hydrostatic_start = prm.get_bool("hydrostatic start");
   prm.leave_subsection();
 
@@ -279,6 +335,8 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
     f.domain_max = vector_of<dim>("geometry/domain max", dmax);
   }
   f.maximum_lost_fraction = prm.get_double("lost fraction limit");
+  if (!trim(prm.get("initial velocity")).empty())
+    c.initial_velocity = vector_of<dim>("geometry/initial velocity", prm.get("initial velocity"));
   prm.enter_subsection("tank");
   c.tank.enabled = prm.get_bool("enabled");
   c.tank.min = vector_of<dim>("geometry/tank/min corner", prm.get("min corner"));
@@ -286,6 +344,12 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
   if (c.tank.enabled && !((c.tank.max - c.tank.min).minCoeff() > 0))
     throw InputError("geometry/tank/max corner", "must lie above the min corner");
   c.tank.open_top = prm.get_bool("open top");
+  {
+    const std::string ends = prm.get("open ends");
+    c.tank.open_axis = ends == "none" ? -1 : ends[0] - 'x';
+    if (c.tank.open_axis >= dim)
+      throw InputError("geometry/tank/open ends", "'" + ends + "' in a 2D case");
+  }
   c.tank.model = prm.get("wall model") == "lennard jones" ? sph::WallModel::lennard_jones
                                                           : sph::WallModel::dummy_particles;
   c.tank.layers = prm.get_integer("dummy layers");
@@ -358,6 +422,58 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
     c.walls.push_back(w);
   }
   prm.leave_subsection();
+  prm.leave_subsection();
+
+  prm.enter_subsection("open boundaries");
+  for (const char* name : {"inlet", "outlet"})
+  {
+    prm.enter_subsection(name);
+    const std::string where = std::string("open boundaries/") + name;
+    if (prm.get_bool("enabled"))
+    {
+      sph::OpenBoundary<dim> z;
+      z.name = name;
+      z.kind = z.name == "inlet" ? sph::OpenBoundaryKind::inlet : sph::OpenBoundaryKind::outlet;
+      const std::string direction = prm.get("direction");
+      z.sign = direction[0] == '+' ? 1 : -1;
+      z.axis = direction[1] - 'x';
+      if (z.axis >= dim)
+        throw InputError(where + "/direction", "'" + direction + "' in a 2D case");
+      z.box_min = vector_of<dim>(where + "/box min", prm.get("box min"));
+      z.box_max = vector_of<dim>(where + "/box max", prm.get("box max"));
+      if (!((z.box_max - z.box_min).minCoeff() > 0))
+        throw InputError(where + "/box max", "must exceed the box min corner in every component");
+      // The box's extent along the flow is its plane face and `layers` spacings behind it.
+      const double depth = prm.get_integer("layers") * f.particle_spacing;
+      const double plane = z.plane();
+      const bool upper = (z.kind == sph::OpenBoundaryKind::inlet) == (z.sign > 0);
+      if (std::abs(z.thickness() - depth) > 1e-6 * depth)
+      {
+        std::ostringstream s;
+        s << "the box is " << z.thickness() << " m deep along " << direction
+          << ", layers * dp = " << depth << " m: make them agree";
+        throw InputError(where + "/layers", s.str());
+      }
+      if (upper)
+        z.box_min[z.axis] = plane - depth;
+      else
+        z.box_max[z.axis] = plane + depth;
+      if (z.kind == sph::OpenBoundaryKind::inlet)
+      {
+        const double u = prm.get_double("velocity"), q = prm.get_double("flow rate");
+        if ((u > 0) == (q > 0))
+          throw InputError(where, "give exactly one of velocity and flow rate (positive)");
+        z.velocity = u > 0 ? u : q / z.section_area();
+        z.profile = prm.get("profile") == "parabolic" ? sph::InletProfile::parabolic
+                                                      : sph::InletProfile::uniform;
+        z.ramp_time = prm.get_double("ramp time");
+      }
+      else
+        z.pressure = prm.get_double("pressure");
+      c.open_boundaries.push_back(z);
+    }
+    prm.leave_subsection();
+  }
   prm.leave_subsection();
 
   prm.enter_subsection("probes");

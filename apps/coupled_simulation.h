@@ -45,6 +45,7 @@ public:
     return fluid_.describe_lost_particle(k);
   }
   double peak_fluid_speed() const override { return fluid_.peak_fluid_speed(); }
+  std::string flow_summary() const override { return fluid_.flow_summary(); }
   double peak_fluid_speed_time() const override { return fluid_.peak_fluid_speed_time(); }
 
   /// Writes the displacement CSVs; returns one summary line per body (RMS errors, wall time).

@@ -4,10 +4,27 @@
 #include "sph/probes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace chipflex::apps
 {
+namespace
+{
+template <int dim>
+std::string open_boundary_flow_text(const sph::OpenBoundary<dim>& z)
+{
+  std::ostringstream s;
+  if (z.kind == sph::OpenBoundaryKind::inlet)
+    s << "mean velocity " << z.velocity << " m/s ("
+      << (z.profile == sph::InletProfile::parabolic ? "parabolic" : "uniform") << "), flow rate "
+      << z.velocity * z.section_area() << (dim == 2 ? " m^2/s" : " m^3/s");
+  else
+    s << "pressure " << z.pressure << " Pa";
+  return s.str();
+}
+} // namespace
+
 template <int dim>
 FluidSimulation<dim>::FluidSimulation(const sph::CaseDescription<dim>& description,
                                       const std::string& output_directory)
@@ -46,6 +63,20 @@ std::vector<std::string> FluidSimulation<dim>::probe_columns() const
     c.push_back("p_" + p.name + "_Pa");
   for (const auto& p : description_.height_probes)
     c.push_back("h_" + p.name + "_m");
+  // Open boundaries: per zone the particles created and removed so far and the mass flow
+  // through its buffer now (kg/s; 2D: kg/(s m)), then the totals.
+  for (int k = 0; k < fluid_->n_open_boundaries(); ++k)
+  {
+    const std::string& name = fluid_->open_boundary(k).name;
+    c.push_back(name + "_created");
+    c.push_back(name + "_removed");
+    c.push_back(name + "_mass_flow");
+  }
+  if (fluid_->n_open_boundaries() > 0)
+  {
+    c.push_back("inflow_particles");
+    c.push_back("outflow_particles");
+  }
   c.push_back("lost_particles");
   return c;
 }
@@ -58,6 +89,18 @@ std::vector<double> FluidSimulation<dim>::probe_values() const
     v.push_back(sph::sample_pressure(*fluid_, p.position));
   for (const auto& p : description_.height_probes)
     v.push_back(sph::sample_water_height(*fluid_, p.position));
+  for (int k = 0; k < fluid_->n_open_boundaries(); ++k)
+  {
+    const auto flow = fluid_->open_boundary_flow(k);
+    v.push_back(double(flow.created));
+    v.push_back(double(flow.removed));
+    v.push_back(flow.mass_flow);
+  }
+  if (fluid_->n_open_boundaries() > 0)
+  {
+    v.push_back(double(fluid_->n_inflow()));
+    v.push_back(double(fluid_->n_outflow()));
+  }
   v.push_back(double(fluid_->lost_particles().size()));
   return v;
 }
@@ -84,8 +127,27 @@ std::string FluidSimulation<dim>::summary() const
   s << dim << "D SPH fluid: " << fluid_->n_fluid() << " fluid + " << fluid_->n_boundary()
     << " boundary particles, dp = " << p.particle_spacing << " m, h = " << p.smoothing_length()
     << " m, c0 = " << p.speed_of_sound << " m/s, " << fluid_->n_walls() << " wall(s)\n";
+  for (int k = 0; k < fluid_->n_open_boundaries(); ++k)
+  {
+    const auto& z = fluid_->open_boundary(k);
+    const char* axes = "xyz";
+    s << "open boundary " << z.name << ": "
+      << (z.kind == sph::OpenBoundaryKind::inlet ? "inlet" : "outlet") << " along "
+      << (z.sign > 0 ? "+" : "-") << axes[z.axis] << ", plane at " << z.plane() << " m, "
+      << std::lround(z.thickness() / p.particle_spacing) << " buffer layers, "
+      << open_boundary_flow_text(z) << "\n";
+  }
   s << "domain [" << p.domain_min.transpose() << "] - [" << p.domain_max.transpose() << "] m";
   return s.str();
+}
+
+template <int dim>
+std::string FluidSimulation<dim>::flow_summary() const
+{
+  if (fluid_->n_open_boundaries() == 0)
+    return "";
+  return " inflow_particles=" + std::to_string(fluid_->n_inflow()) +
+         " outflow_particles=" + std::to_string(fluid_->n_outflow());
 }
 
 template class FluidSimulation<2>;

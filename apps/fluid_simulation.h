@@ -37,6 +37,7 @@ public:
   }
   double peak_fluid_speed() const override { return fluid_->peak_fluid_speed(); }
   double peak_fluid_speed_time() const override { return fluid_->peak_fluid_speed_time(); }
+  std::string flow_summary() const override;
 
   sph::FluidSolver<dim>& fluid() { return *fluid_; }
   /// The wall `id` of fluid() is a body's skin: leave it out of DIR/walls.xdmf.

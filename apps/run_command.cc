@@ -94,7 +94,7 @@ std::string write_summary(const std::string& dir, const Simulation& sim, std::si
   }
   s << " t_s=" << sim.time() << " steps=" << sim.step_count() << " frames=" << frames
     << " lost_particles=" << sim.n_lost_particles()
-    << " peak_fluid_speed_m_s=" << sim.peak_fluid_speed() << "\n";
+    << " peak_fluid_speed_m_s=" << sim.peak_fluid_speed() << sim.flow_summary() << "\n";
   const std::string results = sim.finish(dir);
   if (!results.empty())
     s << results << "\n";
@@ -259,7 +259,8 @@ int run_command(const Arguments& args)
             << particles.n_frames() << " frames in " << dir
             << "/particles.xdmf; lost_particles=" << sim->n_lost_particles()
             << " peak_fluid_speed_m_s=" << sim->peak_fluid_speed()
-            << " (t = " << sim->peak_fluid_speed_time() << " s)" << std::endl;
+            << " (t = " << sim->peak_fluid_speed_time() << " s)" << sim->flow_summary()
+            << std::endl;
   return 0;
 }
 } // namespace chipflex::apps

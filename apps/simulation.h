@@ -39,6 +39,9 @@ public:
   /// The largest fluid speed of the run so far, m/s.
   virtual double peak_fluid_speed() const = 0;
   virtual double peak_fluid_speed_time() const = 0;
+  /// Open boundaries: " inflow_particles=N outflow_particles=M" for the summary line
+  /// (particles created by the inlets and removed through the zones), "" without any.
+  virtual std::string flow_summary() const { return ""; }
   /// A few lines describing the set-up, printed at the start.
   virtual std::string summary() const = 0;
   /// At the end of a run, finished or stopped: writes the simulation's own result files

@@ -35,8 +35,14 @@ WallSurface<dim> tank_walls(const TankDescription<dim>& tank)
   {
     // Clockwise, so that the normal (dy, -dx) points into the tank.
     w.vertices = {Vector(b[0], b[1]), Vector(b[0], a[1]), Vector(a[0], a[1]), Vector(a[0], b[1])};
-    w.faces = {{0, 1}, {1, 2}, {2, 3}};
-    if (!tank.open_top)
+    // Faces: right (x), floor (y), left (x), lid (y).
+    if (tank.open_axis != 0)
+      w.faces.push_back({0, 1});
+    if (tank.open_axis != 1)
+      w.faces.push_back({1, 2});
+    if (tank.open_axis != 0)
+      w.faces.push_back({2, 3});
+    if (!tank.open_top && tank.open_axis != 1)
       w.faces.push_back({3, 0});
   }
   else
@@ -46,7 +52,7 @@ WallSurface<dim> tank_walls(const TankDescription<dim>& tank)
     for (int axis = 0; axis < 3; ++axis)
       for (int side = 0; side < 2; ++side)
       {
-        if (axis == 2 && side == 1 && tank.open_top)
+        if ((axis == 2 && side == 1 && tank.open_top) || axis == tank.open_axis)
           continue;
         const int u = (axis + 1) % 3, v = (axis + 2) % 3;
         auto corner = [&](int i, int j) { return (side << axis) | (i << u) | (j << v); };
@@ -110,19 +116,39 @@ void check_particle_budget(const CaseDescription<dim>& c)
       cells *= (b.max[d] - b.min[d]) / dp;
     n += cells;
   }
+  // Inlets: what they create over the run. Ids must hold all of it; memory only when no
+  // outlet takes it out again (otherwise the fluid in the domain stays what it was).
+  double inflow = 0;
+  bool outlet = false;
+  for (const auto& z : c.open_boundaries)
+  {
+    double buffer = 1;
+    for (int d = 0; d < dim; ++d)
+      buffer *= (z.box_max[d] - z.box_min[d]) / dp;
+    n += buffer;
+    outlet = outlet || z.kind == OpenBoundaryKind::outlet;
+    if (z.kind == OpenBoundaryKind::inlet)
+      inflow += z.velocity * z.section_area() * c.end_time / std::pow(dp, dim);
+  }
+  const double ever = n + inflow;
+  if (!outlet)
+    n += inflow;
   // State, previous state and force-pass arrays (sph/particle_arrays.h), the sort
   // buffers and the set-up copies: about 200 bytes per particle in 3D.
   const double bytes_per_particle = dim == 3 ? 200 : 150;
   const double bytes = n * bytes_per_particle;
   const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
   const double memory = pages > 0 && page_size > 0 ? double(pages) * double(page_size) : 0;
-  if (n > 4e9 || (memory > 0 && bytes > memory))
+  if (ever > 4e9 || (memory > 0 && bytes > memory))
   {
     std::ostringstream s;
     s.precision(3);
     s << dp << " m gives " << n << " fluid particles, about " << bytes / 1e9
       << " GB (this machine has " << memory / 1e9 << " GB"
-      << (n > 4e9 ? "; particle ids hold 4e9" : "") << "): use a coarser spacing";
+      << (ever > 4e9
+              ? "; " + std::to_string(ever) + " over the run with the inflow, particle ids hold 4e9"
+              : "")
+      << "): use a coarser spacing";
     throw InputError("fluid/particle spacing", s.str());
   }
 }
@@ -157,17 +183,56 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
 
   // Fluid on the lattice anchored at the tank corner (or the block corner), so that
   // tank dummy particles and fluid share one lattice.
-  std::vector<Vector> fluid_x;
+  std::vector<Vector> fluid_x, fluid_v;
   std::vector<double> fluid_rho;
   const TaitEquationOfState eos(p.reference_density, p.speed_of_sound, p.gamma);
+  const auto in_buffer = [&](const Vector& x)
+  {
+    for (const auto& z : c.open_boundaries)
+      if (z.in_section(x.data()) && z.depth(x.data()) > 0 && z.depth(x.data()) <= z.thickness())
+        return true;
+    return false;
+  };
+  double top = -1e300;
+  for (const auto& b : c.fluid_blocks)
+    top = std::max(top, b.max[up]);
   for (const auto& b : c.fluid_blocks)
   {
     const Vector origin = c.tank.enabled ? c.tank.min : b.min;
     lattice<dim>(b.min, b.max, origin, dp,
                  [&](const Vector& x)
                  {
+                   if (in_buffer(x))
+                     return;
                    fluid_x.push_back(x);
+                   fluid_v.push_back(c.initial_velocity);
                    const double depth = b.max[up] - x[up];
+                   fluid_rho.push_back(c.hydrostatic_start ? eos.density(p.reference_density *
+                                                                         p.gravity.norm() * depth)
+                                                           : p.reference_density);
+                 });
+  }
+  // The buffers, on the same lattice: the fluid's rows continue through the planes.
+  for (const auto& z : c.open_boundaries)
+  {
+    const Vector origin = c.tank.enabled ? c.tank.min : z.box_min;
+    const double offset = (z.plane() - origin[z.axis]) / dp;
+    if (std::abs(offset - std::round(offset)) > 1e-6 * std::max(1.0, std::abs(offset)))
+      throw InputError("open boundaries/" + z.name,
+                       "the plane must lie a whole number of particle spacings from the "
+                       "lattice origin (the tank's min corner)");
+    lattice<dim>(z.box_min, z.box_max, origin, dp,
+                 [&](const Vector& x)
+                 {
+                   fluid_x.push_back(x);
+                   Vector v = c.initial_velocity;
+                   if (z.kind == OpenBoundaryKind::inlet)
+                   {
+                     v.setZero();
+                     v[z.axis] = z.sign * z.speed(x.data(), 0);
+                   }
+                   fluid_v.push_back(v);
+                   const double depth = std::max(0.0, top - x[up]);
                    fluid_rho.push_back(c.hydrostatic_start ? eos.density(p.reference_density *
                                                                          p.gravity.norm() * depth)
                                                            : p.reference_density);
@@ -187,26 +252,30 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
       Vector lo = c.tank.min.array() - layers * dp, hi = c.tank.max.array() + layers * dp;
       if (c.tank.open_top)
         hi[up] = c.tank.max[up];
-      lattice<dim>(lo, hi, c.tank.min, dp,
-                   [&](const Vector& x)
-                   {
-                     bool inside = true;
-                     for (int d = 0; d < dim; ++d)
-                       inside = inside && x[d] > c.tank.min[d] && x[d] < c.tank.max[d];
-                     if (!inside)
-                     {
-                       tank_dummies.push_back(x);
-                       // Walls start in hydrostatic balance with the fluid beside them (a wall at
-                       // rho0 would let the column drop into it and start a pressure wave).
-                       double depth = 0;
-                       for (const auto& b : c.fluid_blocks)
-                         depth = std::max(depth, b.max[up] - x[up]);
-                       tank_rho.push_back(
-                           c.hydrostatic_start
-                               ? eos.density(p.reference_density * p.gravity.norm() * depth)
-                               : p.reference_density);
-                     }
-                   });
+      if (c.tank.open_axis >= 0)
+        lo[c.tank.open_axis] = c.tank.min[c.tank.open_axis],
+        hi[c.tank.open_axis] = c.tank.max[c.tank.open_axis];
+      lattice<dim>(
+          lo, hi, c.tank.min, dp,
+          [&](const Vector& x)
+          {
+            bool inside = true;
+            for (int d = 0; d < dim; ++d)
+              inside = inside &&
+                       (d == c.tank.open_axis || (x[d] > c.tank.min[d] && x[d] < c.tank.max[d]));
+            if (!inside)
+            {
+              tank_dummies.push_back(x);
+              // Walls start in hydrostatic balance with the fluid beside them (a wall at
+              // rho0 would let the column drop into it and start a pressure wave).
+              double depth = 0;
+              for (const auto& b : c.fluid_blocks)
+                depth = std::max(depth, b.max[up] - x[up]);
+              tank_rho.push_back(c.hydrostatic_start
+                                     ? eos.density(p.reference_density * p.gravity.norm() * depth)
+                                     : p.reference_density);
+            }
+          });
     }
   }
 
@@ -232,7 +301,9 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
     solver->add_wall(walls[w], tank ? tank_dummies : std::vector<Vector>{},
                      tank ? tank_rho : std::vector<double>{});
   }
-  solver->add_fluid_particles(fluid_x, fluid_rho);
+  for (const auto& z : c.open_boundaries)
+    solver->add_open_boundary(z);
+  solver->add_fluid_particles(fluid_x, fluid_rho, fluid_v);
   return solver;
 }
 

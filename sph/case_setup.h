@@ -5,6 +5,7 @@
 
 #include "sph/fluid_parameters.h"
 #include "sph/fluid_solver.h"
+#include "sph/open_boundary.h"
 #include "sph/wall_surface.h"
 
 #include <memory>
@@ -25,6 +26,9 @@ struct TankDescription
   bool enabled = true;
   Eigen::Matrix<double, dim, 1> min, max; ///< inner faces of the walls, m
   bool open_top = true;
+  /// -1, or an axis whose two faces are left open (a channel or duct: the fluid enters
+  /// and leaves there through open boundaries).
+  int open_axis = -1;
   WallModel model = WallModel::dummy_particles;
   int layers = 0; ///< dummy layers (0: cover the kernel support)
   LennardJonesParameters lennard_jones;
@@ -46,6 +50,11 @@ struct CaseDescription
   std::vector<FluidBlock<dim>> fluid_blocks;
   TankDescription<dim> tank;
   std::vector<WallSurface<dim>> walls;
+  /// Inlets and outlets; build_fluid fills their buffer boxes with the fluid's lattice
+  /// (fluid-block particles inside a buffer are replaced).
+  std::vector<OpenBoundary<dim>> open_boundaries;
+  /// The velocity every fluid block starts with, m/s.
+  Eigen::Matrix<double, dim, 1> initial_velocity = Eigen::Matrix<double, dim, 1>::Zero();
   /// Start with the hydrostatic density of each block (no initial pressure wave).
   bool hydrostatic_start = true;
   /// Domain box: if fluid.domain_min == domain_max, the bounding box of particles and

@@ -73,6 +73,11 @@ struct FluidParameters
   /// of tests/sph/test_conservation.cc one such particle then passes the wall and is
   /// removed, and the moving Lennard-Jones piston is pulled instead of pushed.
   bool cut_spray_tension = false;
+  /// Dummy wall particles take 2 v_wall - v_fluid(mirror point) instead of the wall's
+  /// velocity (the no-slip velocity of English et al.'s modified DBC, 2022): the
+  /// no-slip surface is the wall face, not the first dummy layer half a spacing behind
+  /// it (sph/fluid_solver_no_slip.cc). Off by default (DualSPHysics' plain DBC).
+  bool no_slip_walls = false;
   TimeScheme scheme = TimeScheme::verlet;
   int verlet_euler_every = 40;
   double cfl = 0.2;

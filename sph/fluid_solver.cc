@@ -111,8 +111,8 @@ void FluidSolver<dim>::finish_setup()
   auto& p = particles_;
   const std::size_t nb = staged_boundary_x_.size(), nf = staged_fluid_x_.size();
   p.n_boundary = nb;
-  n_fluid_created_ = nf;
-  p.resize(nb + nf, is_symplectic(parameters_.scheme));
+  n_fluid_created_ = n_fluid_initial_ = nf;
+  p.resize(nb + nf, is_symplectic(parameters_.scheme), !zones_.empty());
   for (std::size_t i = 0; i < nb + nf; ++i)
   {
     const bool fluid = i >= nb;
@@ -128,6 +128,16 @@ void FluidSolver<dim>::finish_setup()
     }
     p.density[i] = p.density_previous[i] = rho;
     p.id[i] = std::uint32_t(fluid ? i - nb : i);
+    // The fluid's lattice inside a zone's box is that zone's buffer.
+    for (std::size_t k = 0; fluid && k < zones_.size(); ++k)
+    {
+      const double depth = zones_[k].depth(x.data());
+      if (zones_[k].in_section(x.data()) && depth > 0 && depth <= zones_[k].thickness())
+      {
+        p.zone[i] = std::uint8_t(k + 1);
+        break;
+      }
+    }
   }
   for (std::size_t i = 0; i < nb; ++i)
   {
@@ -347,6 +357,8 @@ double FluidSolver<dim>::step()
 {
   finish_setup();
   run_hooks(HookPoint::before_forces);
+  if (!zones_.empty())
+    transfer_open_boundaries();
   // position_verlet reuses the previous step's mid-step pass for the predictor (and dt);
   // only the first step (no pass yet) evaluates the forces at t_n.
   if (parameters_.scheme != TimeScheme::position_verlet || !forces_current_)

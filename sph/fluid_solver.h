@@ -39,11 +39,20 @@
 // bitwise) and recorded in lost_particles(). One splash must not end a long run; many
 // lost particles mean the case is wrong.
 //
+// Open boundaries (sph/open_boundary.h): add_open_boundary(zone) before the first step.
+// Inlet and outlet buffers are fluid particles flagged with their zone; zones are
+// handled outside the force loop: particles cross, are created and removed at the step
+// start (transfer_open_boundaries), buffer states are prescribed or extrapolated after
+// each sort (prescribe_open_boundaries), and their rates are zeroed after each pass so
+// the integrators move them with their prescribed velocity. Outflow is counted per zone,
+// apart from the lost particles (it does not count toward maximum_lost_fraction).
+//
 // Failure: more than maximum_lost_fraction of the fluid lost, a boundary particle
 // leaving the domain box, a non-finite acceleration or dt below minimum_time_step
 // throws SimulationError naming the step, time and particle.
 
 #include "sph/fluid_parameters.h"
+#include "sph/open_boundary.h"
 #include "sph/particle_arrays.h"
 #include "sph/wall_surface.h"
 
@@ -119,6 +128,9 @@ public:
   int add_wall(const WallSurface<dim>& wall, const std::vector<Vector>& dummy_positions = {},
                const std::vector<double>& dummy_densities = {});
   void add_hook(HookPoint point, Hook hook);
+  /// An inlet or outlet buffer zone (sph/open_boundary.h). The fluid particles inside
+  /// its box at set-up are its buffer: fill it with the fluid's lattice.
+  void add_open_boundary(const OpenBoundary<dim>& zone);
   /// Ends the set-up: builds the particle arrays (boundary block first). Called by the
   /// first step(), save() or load(); call it yourself before reading particles of a
   /// solver that has not stepped yet. Idempotent.
@@ -162,8 +174,20 @@ public:
   std::size_t remove_fluid_where(const std::function<bool(const Vector&)>& overlaps);
   /// Fluid particles removed so far, in the order of removal.
   const std::vector<LostParticle<dim>>& lost_particles() const { return lost_; }
-  /// Fluid particles the run started with (removed ones included).
+  /// Fluid particles of the run so far: those it started with and those the inlets
+  /// created (removed ones included).
   std::size_t n_fluid_created() const { return n_fluid_created_; }
+
+  // --- open boundaries -------------------------------------------------------------------
+  int n_open_boundaries() const { return int(zones_.size()); }
+  const OpenBoundary<dim>& open_boundary(int k) const { return zones_.at(k); }
+  /// Counts and the current mass flow through zone k (a scan of the particles).
+  OpenBoundaryFlow open_boundary_flow(int k) const;
+  /// Particles created by all inlets, and removed through all zones, so far.
+  std::size_t n_inflow() const;
+  std::size_t n_outflow() const;
+  /// Particle i is a buffer particle of some zone.
+  bool is_buffer(std::size_t i) const { return !particles_.zone.empty() && particles_.zone[i]; }
   /// Largest fluid speed seen at any force pass of the run so far, m/s, and when.
   double peak_fluid_speed() const { return peak_speed_; }
   double peak_fluid_speed_time() const { return peak_speed_time_; }
@@ -189,6 +213,10 @@ private:
   void correct_symplectic(double dt);
   void check_time_step(double dt) const;
   void remove_lost_particles();
+  void transfer_open_boundaries();
+  void prescribe_open_boundaries();
+  void freeze_open_boundaries();
+  void mirror_wall_velocities();
   float spray_fill_limit() const;
   /// The fluid particle with the largest acceleration of the last force pass.
   std::size_t most_accelerated_particle() const;
@@ -210,7 +238,9 @@ private:
   float dot_rr2_max_ = 0;
   double acceleration_max_ = 0;
   std::vector<LostParticle<dim>> lost_;
-  std::size_t n_fluid_created_ = 0;
+  std::size_t n_fluid_created_ = 0, n_fluid_initial_ = 0;
+  std::vector<OpenBoundary<dim>> zones_;
+  std::vector<std::int64_t> zone_created_, zone_removed_;
   double peak_speed_ = 0, peak_speed_time_ = 0;
 
   struct Impl;

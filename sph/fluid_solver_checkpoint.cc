@@ -92,6 +92,14 @@ void FluidSolver<dim>::save(Hdf5File& file, const std::string& group) const
     file.write(group + "/lost/density", lost_density, {nl});
     file.write(group + "/lost/position", lost_x, {nl, std::size_t(dim)});
   }
+  if (!zones_.empty())
+  {
+    // Open boundaries: which particles are buffer, and the counts (the ids of new
+    // particles continue from n_fluid_created).
+    file.write(group + "/zone", std::vector<std::int64_t>(p.zone.begin(), p.zone.end()), {n});
+    file.write(group + "/open_boundaries/created", zone_created_, {zones_.size()});
+    file.write(group + "/open_boundaries/removed", zone_removed_, {zones_.size()});
+  }
   if (parameters_.scheme == TimeScheme::position_verlet && forces_current_)
   {
     // The next step's predictor and dt come from the last pass: a restart must not
@@ -125,14 +133,32 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
   const std::string where = file.path() + ":" + group;
   if (file.read_integer_attribute(group, "dim") != dim)
     throw InputError(where, "checkpoint of a different dimension");
-  // Removed fluid particles make the saved count smaller than the case's, never larger.
+  // Open boundaries: the inlets' particles are the case's fluid plus what they created.
+  const bool zones_saved = file.exists(group + "/zone");
+  if (zones_saved != !zones_.empty())
+    throw InputError(where, zones_.empty() ? "checkpoint has open boundaries, the case has none"
+                                           : "checkpoint has no open boundaries, the case has");
+  std::vector<std::int64_t> created(zones_.size(), 0), removed(zones_.size(), 0);
+  if (zones_saved)
+  {
+    created = file.read_integers(group + "/open_boundaries/created");
+    removed = file.read_integers(group + "/open_boundaries/removed");
+    if (created.size() != zones_.size() || removed.size() != zones_.size())
+      throw InputError(where, "checkpoint has another number of open boundaries than the case");
+  }
+  std::size_t inflow = 0, outflow = 0;
+  for (std::size_t k = 0; k < zones_.size(); ++k)
+    inflow += std::size_t(created[k]), outflow += std::size_t(removed[k]);
+  n_fluid_created_ = n_fluid_initial_ + inflow;
+  // Removed fluid particles make the saved count smaller than the case's plus the inflow,
+  // never larger.
   const std::size_t n = std::size_t(file.read_integer_attribute(group, "n_particles"));
   if (n > n_fluid_created_ + p.n_boundary ||
       std::size_t(file.read_integer_attribute(group, "n_boundary")) != p.n_boundary)
     throw InputError(where, "checkpoint has a different particle count than the case (" +
                                 std::to_string(n_fluid_created_ + p.n_boundary) + " particles, " +
                                 std::to_string(p.n_boundary) + " boundary)");
-  p.resize(n, is_symplectic(parameters_.scheme));
+  p.resize(n, is_symplectic(parameters_.scheme), !zones_.empty());
   if (file.exists(group + "/position_previous") != !p.position_previous[0].empty())
     throw InputError(where, "checkpoint was written with another time scheme");
   time_ = file.read_double_attribute(group, "time");
@@ -159,6 +185,21 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
     p.id[i] = std::uint32_t(id[i]);
     p.fill[i] = float(fill[i]);
   }
+  if (zones_saved)
+  {
+    const auto zone = file.read_integers(group + "/zone");
+    if (zone.size() != n)
+      throw InputError(where, "wrong array size in checkpoint");
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      if (zone[i] < 0 || zone[i] > 0xff || std::size_t(zone[i] & zone_index_mask) > zones_.size() ||
+          (zone[i] && i < p.n_boundary))
+        throw InputError(where, "checkpoint names an open boundary the case has not");
+      p.zone[i] = std::uint8_t(zone[i]);
+    }
+  }
+  zone_created_ = created;
+  zone_removed_ = removed;
   lost_.clear();
   peak_speed_ = peak_speed_time_ = 0;
   if (file.has_attribute(group, "n_lost"))
@@ -168,7 +209,7 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
     peak_speed_ = file.read_double_attribute(group, "peak_fluid_speed");
     peak_speed_time_ = file.read_double_attribute(group, "peak_fluid_speed_time");
     const std::size_t nl = std::size_t(file.read_integer_attribute(group, "n_lost"));
-    if (n + nl != n_fluid_created_ + p.n_boundary)
+    if (n + nl + outflow != n_fluid_created_ + p.n_boundary)
       throw InputError(where, "particle and lost-particle counts do not add up");
     if (nl > 0)
     {
@@ -194,7 +235,7 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
       }
     }
   }
-  else if (n != n_fluid_created_ + p.n_boundary)
+  else if (n + outflow != n_fluid_created_ + p.n_boundary)
     throw InputError(where, "checkpoint has a different particle count than the case");
   forces_current_ = false;
   if (parameters_.scheme == TimeScheme::position_verlet && file.exists(group + "/acceleration"))

@@ -118,6 +118,10 @@ template <int dim>
 void FluidSolver<dim>::force_pass()
 {
   sort_and_bin();
+  if (!zones_.empty())
+    prescribe_open_boundaries();
+  if (parameters_.no_slip_walls)
+    mirror_wall_velocities();
   auto& p = particles_;
   auto& im = *impl_;
   const std::size_t nb = p.n_boundary, n = p.size();
@@ -202,6 +206,8 @@ void FluidSolver<dim>::force_pass()
       for (int d = 0; d < dim; ++d)
         if (!std::isfinite(p.acceleration[d][i]))
           fail(i, "has a non-finite acceleration (the run blew up)");
+  if (!zones_.empty())
+    freeze_open_boundaries();
 }
 
 template void FluidSolver<2>::Impl::setup(const FluidParameters<2>&);

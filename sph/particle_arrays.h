@@ -23,6 +23,8 @@ namespace chipflex::sph
 /// up to 200k particles, so a step has one parallel region below that.
 inline constexpr std::size_t parallel_threshold = 2000;
 inline constexpr std::size_t light_parallel_threshold = 200000;
+/// ParticleArrays::zone: the zone number k + 1 in the low bits, a flag in the top bit.
+inline constexpr std::uint8_t zone_index_mask = 0x7f, zone_respawned = 0x80;
 
 template <int dim>
 struct ParticleArrays
@@ -42,6 +44,10 @@ struct ParticleArrays
   /// Filling of the kernel support at the last force pass (sph/force_loop.h); the next
   /// pass cuts the tension of particles below FluidSolver's spray threshold.
   std::vector<float> fill;
+  /// Open boundaries only (empty otherwise): 0 for a fluid particle, k + 1 for a buffer
+  /// particle of zone k (sph/open_boundary.h), plus zone_respawned for an inlet particle
+  /// that has flowed back into its buffer (its replacement exists already).
+  std::vector<std::uint8_t> zone;
 
   // Results of the last force pass (not permuted: recomputed after every sort).
   std::array<std::vector<float>, dim> acceleration; ///< boundary: reaction force / mass
@@ -54,7 +60,7 @@ struct ParticleArrays
   std::size_t size() const { return density.size(); }
   std::size_t n_fluid() const { return size() - n_boundary; }
 
-  void resize(std::size_t n, bool with_previous_positions)
+  void resize(std::size_t n, bool with_previous_positions, bool with_zones = false)
   {
     for (int d = 0; d < dim; ++d)
     {
@@ -68,6 +74,7 @@ struct ParticleArrays
     density_previous.resize(n);
     id.resize(n);
     fill.resize(n, 1.0f);
+    zone.resize(with_zones ? n : 0);
     density_rate.resize(n);
     pressure_term.resize(n);
     volume.resize(n);
@@ -92,7 +99,34 @@ struct ParticleArrays
     apply(density_previous, first, permutation, scratch);
     apply(id, first, permutation, scratch);
     apply(fill, first, permutation, scratch);
+    if (!zone.empty())
+      apply(zone, first, permutation, scratch);
     apply(cell, first, permutation, scratch);
+  }
+
+  /// Appends one fluid particle at rest in every rate (an inlet's new buffer particle).
+  void append(const double* x, const float* v, float rho, std::uint32_t new_id,
+              std::uint8_t new_zone)
+  {
+    for (int d = 0; d < dim; ++d)
+    {
+      position[d].push_back(x[d]);
+      velocity[d].push_back(v[d]);
+      velocity_previous[d].push_back(v[d]);
+      if (!position_previous[d].empty())
+        position_previous[d].push_back(x[d]);
+      acceleration[d].push_back(0.0f);
+    }
+    density.push_back(rho);
+    density_previous.push_back(rho);
+    id.push_back(new_id);
+    fill.push_back(1.0f);
+    if (!zone.empty())
+      zone.push_back(new_zone);
+    density_rate.push_back(0.0f);
+    pressure_term.push_back(0.0f);
+    volume.push_back(0.0f);
+    cell.push_back(0);
   }
 
   /// Removes the particles at `sorted_indices` (ascending, all >= n_boundary) from every
@@ -113,6 +147,7 @@ struct ParticleArrays
     erase(density_previous, sorted_indices);
     erase(id, sorted_indices);
     erase(fill, sorted_indices);
+    erase(zone, sorted_indices);
     erase(density_rate, sorted_indices);
     erase(pressure_term, sorted_indices);
     erase(volume, sorted_indices);
@@ -125,7 +160,7 @@ struct ParticleArrays
     for (int d = 0; d < dim; ++d)
       b += bytes(position[d]) + bytes(velocity[d]) + bytes(velocity_previous[d]) +
            bytes(position_previous[d]) + bytes(acceleration[d]);
-    return b + bytes(density) + bytes(density_previous) + bytes(id) + bytes(fill) +
+    return b + bytes(density) + bytes(density_previous) + bytes(id) + bytes(fill) + bytes(zone) +
            bytes(density_rate) + bytes(pressure_term) + bytes(volume) + bytes(cell);
   }
 
