@@ -69,90 +69,70 @@ std::size_t write_block_mesh(const BlockMeshSpec& spec, const std::string& path)
   if (longest / spec.size > 5000)
     throw InputError("--size", "too small for the body (over 5000 elements along an edge)");
 
-  // gmsh picks the format from the extension, so the temporary keeps ".msh".
-  const std::string temporary = path + ".tmp" + std::to_string(::getpid()) + ".msh";
   std::size_t n_elements = 0;
-  try
-  {
-    with_gmsh_model(
-        path,
-        [&]
-        {
-          gmsh::model::add("chipflex_block");
-          int body;
-          if (dim == 2)
-            body = gmsh::model::occ::addRectangle(0, 0, 0, spec.extent[0], spec.extent[1]);
-          else
-            body =
-                gmsh::model::occ::addBox(0, 0, 0, spec.extent[0], spec.extent[1], spec.extent[2]);
-          gmsh::model::occ::synchronize();
+  with_gmsh_model(
+      path,
+      [&]
+      {
+        gmsh::model::add("chipflex_block");
+        int body;
+        if (dim == 2)
+          body = gmsh::model::occ::addRectangle(0, 0, 0, spec.extent[0], spec.extent[1]);
+        else
+          body = gmsh::model::occ::addBox(0, 0, 0, spec.extent[0], spec.extent[1], spec.extent[2]);
+        gmsh::model::occ::synchronize();
 
-          std::array<double, 3> lo{0, 0, 0}, hi = spec.extent;
-          if (dim == 2)
-            hi[2] = 0;
-          // Inflation of the selection boxes: above OpenCASCADE's bounding-box padding (1e-7),
-          // far below the thinnest extent.
-          const double thinnest = *std::min_element(spec.extent.begin(), spec.extent.begin() + dim);
-          const double eps = std::max(1e-3 * thinnest, 1e-6);
-          const int a = spec.long_axis;
-          auto end_face = [&](bool at_max)
+        std::array<double, 3> lo{0, 0, 0}, hi = spec.extent;
+        if (dim == 2)
+          hi[2] = 0;
+        // Inflation of the selection boxes: above OpenCASCADE's bounding-box padding (1e-7),
+        // far below the thinnest extent.
+        const double thinnest = *std::min_element(spec.extent.begin(), spec.extent.begin() + dim);
+        const double eps = std::max(1e-3 * thinnest, 1e-6);
+        const int a = spec.long_axis;
+        auto end_face = [&](bool at_max)
+        {
+          auto l = lo, h = hi;
+          (at_max ? l : h)[a] = at_max ? hi[a] : lo[a];
+          return entities_in(dim - 1, l, h, eps);
+        };
+        gmsh::model::setPhysicalName(dim, gmsh::model::addPhysicalGroup(dim, {body}), "body");
+        gmsh::model::setPhysicalName(
+            dim - 1, gmsh::model::addPhysicalGroup(dim - 1, end_face(spec.clamp_at_max)), "clamp");
+        gmsh::model::setPhysicalName(
+            dim - 1, gmsh::model::addPhysicalGroup(dim - 1, end_face(!spec.clamp_at_max)), "tip");
+        gmsh::model::setPhysicalName(
+            dim - 1, gmsh::model::addPhysicalGroup(dim - 1, entities_in(dim - 1, lo, hi, eps)),
+            "skin");
+        // Each side by its position, e.g. xmin = the face at x = 0 (the gate's upstream face).
+        const char* axis_name[] = {"x", "y", "z"};
+        for (int axis = 0; axis < dim; ++axis)
+          for (const bool at_max : {false, true})
           {
             auto l = lo, h = hi;
-            (at_max ? l : h)[a] = at_max ? hi[a] : lo[a];
-            return entities_in(dim - 1, l, h, eps);
-          };
-          gmsh::model::setPhysicalName(dim, gmsh::model::addPhysicalGroup(dim, {body}), "body");
-          gmsh::model::setPhysicalName(
-              dim - 1, gmsh::model::addPhysicalGroup(dim - 1, end_face(spec.clamp_at_max)),
-              "clamp");
-          gmsh::model::setPhysicalName(
-              dim - 1, gmsh::model::addPhysicalGroup(dim - 1, end_face(!spec.clamp_at_max)), "tip");
-          gmsh::model::setPhysicalName(
-              dim - 1, gmsh::model::addPhysicalGroup(dim - 1, entities_in(dim - 1, lo, hi, eps)),
-              "skin");
-          // Each side by its position, e.g. xmin = the face at x = 0 (the gate's upstream face).
-          const char* axis_name[] = {"x", "y", "z"};
-          for (int axis = 0; axis < dim; ++axis)
-            for (const bool at_max : {false, true})
-            {
-              auto l = lo, h = hi;
-              (at_max ? l : h)[axis] = at_max ? hi[axis] : lo[axis];
-              gmsh::model::setPhysicalName(
-                  dim - 1, gmsh::model::addPhysicalGroup(dim - 1, entities_in(dim - 1, l, h, eps)),
-                  std::string(axis_name[axis]) + (at_max ? "max" : "min"));
-            }
-
-          if (spec.simplex)
-          {
-            gmsh::option::setNumber("Mesh.MeshSizeMax", spec.size);
-            gmsh::option::setNumber("Mesh.MeshSizeMin", 0.5 * spec.size);
+            (at_max ? l : h)[axis] = at_max ? hi[axis] : lo[axis];
+            gmsh::model::setPhysicalName(
+                dim - 1, gmsh::model::addPhysicalGroup(dim - 1, entities_in(dim - 1, l, h, eps)),
+                std::string(axis_name[axis]) + (at_max ? "max" : "min"));
           }
-          else
-            make_structured(spec);
-          gmsh::model::mesh::generate(dim);
 
-          std::vector<int> types;
-          std::vector<std::vector<std::size_t>> tags, nodes;
-          gmsh::model::mesh::getElements(types, tags, nodes, dim);
-          for (const auto& t : tags)
-            n_elements += t.size();
+        if (spec.simplex)
+        {
+          gmsh::option::setNumber("Mesh.MeshSizeMax", spec.size);
+          gmsh::option::setNumber("Mesh.MeshSizeMin", 0.5 * spec.size);
+        }
+        else
+          make_structured(spec);
+        gmsh::model::mesh::generate(dim);
 
-          gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-          gmsh::option::setNumber("Mesh.SaveAll", 0);
-          gmsh::write(temporary);
-        });
-  }
-  catch (...)
-  {
-    std::remove(temporary.c_str());
-    throw;
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0)
-  {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw InputError(path, "cannot write: " + reason);
-  }
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> tags, nodes;
+        gmsh::model::mesh::getElements(types, tags, nodes, dim);
+        for (const auto& t : tags)
+          n_elements += t.size();
+
+        write_mesh_file(path);
+      });
   return n_elements;
 }
 } // namespace chipflex::meshes

@@ -593,104 +593,85 @@ void check_chip_spec(const ChipMeshSpec& spec)
 ChipMeshSummary write_chip_mesh(const ChipMeshSpec& spec, const std::string& path)
 {
   check_chip_spec(spec);
-  // gmsh picks the format from the extension, so the temporary keeps ".msh".
-  const std::string temporary = path + ".tmp" + std::to_string(::getpid()) + ".msh";
   ChipMeshSummary summary;
-  try
-  {
-    with_gmsh_model(
-        path,
-        [&]
+  with_gmsh_model(
+      path,
+      [&]
+      {
+        gmsh::model::add("chipflex_chip");
+        const gmsh::vectorpair volumes = spec.shape == ChipMeshSpec::Shape::helical
+                                             ? sweep_helical_chip(spec)
+                                             : extrude_planar_chip(spec);
+        // Construction points and the sweep path are not part of the chip.
+        gmsh::vectorpair free_entities;
+        for (int d = 0; d <= 2; ++d)
         {
-          gmsh::model::add("chipflex_chip");
-          const gmsh::vectorpair volumes = spec.shape == ChipMeshSpec::Shape::helical
-                                               ? sweep_helical_chip(spec)
-                                               : extrude_planar_chip(spec);
-          // Construction points and the sweep path are not part of the chip.
-          gmsh::vectorpair free_entities;
-          for (int d = 0; d <= 2; ++d)
+          gmsh::vectorpair entities;
+          gmsh::model::getEntities(entities, d);
+          for (const auto& e : entities)
           {
-            gmsh::vectorpair entities;
-            gmsh::model::getEntities(entities, d);
-            for (const auto& e : entities)
-            {
-              std::vector<int> up, down;
-              gmsh::model::getAdjacencies(e.first, e.second, up, down);
-              if (up.empty())
-                free_entities.push_back(e);
-            }
+            std::vector<int> up, down;
+            gmsh::model::getAdjacencies(e.first, e.second, up, down);
+            if (up.empty())
+              free_entities.push_back(e);
           }
-          if (!free_entities.empty())
-          {
-            gmsh::model::occ::remove(free_entities, true);
-            gmsh::model::occ::synchronize();
-          }
+        }
+        if (!free_entities.empty())
+        {
+          gmsh::model::occ::remove(free_entities, true);
+          gmsh::model::occ::synchronize();
+        }
 
-          std::vector<int> volume_tags;
-          for (const auto& v : volumes)
-            volume_tags.push_back(v.second);
-          gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, volume_tags), "body");
-          const std::vector<int> skin = outer_faces(volumes);
-          gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, skin), "skin");
-          if (!chip_is_closed(spec))
-          {
-            const double end =
-                spec.shape == ChipMeshSpec::Shape::ribbon ? spec.length : total_angle(spec);
-            const double tolerance = 0.1 * std::min(spec.width, spec.thickness);
-            gmsh::model::setPhysicalName(
-                2,
-                gmsh::model::addPhysicalGroup(2, {face_nearest(skin, centre(spec, 0), tolerance)}),
-                "start");
-            gmsh::model::setPhysicalName(2,
-                                         gmsh::model::addPhysicalGroup(
-                                             2, {face_nearest(skin, centre(spec, end), tolerance)}),
-                                         "end");
-          }
+        std::vector<int> volume_tags;
+        for (const auto& v : volumes)
+          volume_tags.push_back(v.second);
+        gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, volume_tags), "body");
+        const std::vector<int> skin = outer_faces(volumes);
+        gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, skin), "skin");
+        if (!chip_is_closed(spec))
+        {
+          const double end =
+              spec.shape == ChipMeshSpec::Shape::ribbon ? spec.length : total_angle(spec);
+          const double tolerance = 0.1 * std::min(spec.width, spec.thickness);
+          gmsh::model::setPhysicalName(
+              2, gmsh::model::addPhysicalGroup(2, {face_nearest(skin, centre(spec, 0), tolerance)}),
+              "start");
+          gmsh::model::setPhysicalName(
+              2,
+              gmsh::model::addPhysicalGroup(2, {face_nearest(skin, centre(spec, end), tolerance)}),
+              "end");
+        }
 
-          gmsh::model::mesh::generate(3);
-          if (spec.order == 2)
-          {
-            // Complete 27-node hexahedra, the nodes placed on the CAD surfaces.
-            gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 0);
-            gmsh::model::mesh::setOrder(2);
-          }
-          if (spec.shape == ChipMeshSpec::Shape::helical || spec.shape == ChipMeshSpec::Shape::arc)
-            snap_to_exact_chip(spec);
-          std::vector<int> types;
-          std::vector<std::vector<std::size_t>> tags, nodes;
-          gmsh::model::mesh::getElements(types, tags, nodes, 3);
-          for (std::size_t k = 0; k < types.size(); ++k)
-          {
-            std::string name;
-            int d, order, n_nodes, n_primary;
-            std::vector<double> local;
-            gmsh::model::mesh::getElementProperties(types[k], name, d, order, n_nodes, local,
-                                                    n_primary);
-            if (n_primary != 8)
-              throw std::runtime_error("the chip mesh is not purely hexahedral (internal)");
-            summary.n_elements += tags[k].size();
-          }
-          std::vector<std::size_t> node_tags;
-          std::vector<double> coords, parametric;
-          gmsh::model::mesh::getNodes(node_tags, coords, parametric);
-          summary.n_nodes = node_tags.size();
+        gmsh::model::mesh::generate(3);
+        if (spec.order == 2)
+        {
+          // Complete 27-node hexahedra, the nodes placed on the CAD surfaces.
+          gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 0);
+          gmsh::model::mesh::setOrder(2);
+        }
+        if (spec.shape == ChipMeshSpec::Shape::helical || spec.shape == ChipMeshSpec::Shape::arc)
+          snap_to_exact_chip(spec);
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> tags, nodes;
+        gmsh::model::mesh::getElements(types, tags, nodes, 3);
+        for (std::size_t k = 0; k < types.size(); ++k)
+        {
+          std::string name;
+          int d, order, n_nodes, n_primary;
+          std::vector<double> local;
+          gmsh::model::mesh::getElementProperties(types[k], name, d, order, n_nodes, local,
+                                                  n_primary);
+          if (n_primary != 8)
+            throw std::runtime_error("the chip mesh is not purely hexahedral (internal)");
+          summary.n_elements += tags[k].size();
+        }
+        std::vector<std::size_t> node_tags;
+        std::vector<double> coords, parametric;
+        gmsh::model::mesh::getNodes(node_tags, coords, parametric);
+        summary.n_nodes = node_tags.size();
 
-          gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-          gmsh::option::setNumber("Mesh.SaveAll", 0);
-          gmsh::write(temporary);
-        });
-  }
-  catch (...)
-  {
-    std::remove(temporary.c_str());
-    throw;
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0)
-  {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw InputError(path, "cannot write: " + reason);
-  }
+        write_mesh_file(path);
+      });
   return summary;
 }
 } // namespace chipflex::meshes

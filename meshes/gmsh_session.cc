@@ -2,9 +2,13 @@
 
 #include "common/input_error.h"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <gmsh.h>
 #include <mutex>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace chipflex::meshes
 {
@@ -46,6 +50,29 @@ void open_mesh_file(const std::string& path)
   gmsh::logger::getLastError(error);
   if (!error.empty() && error != before)
     throw InputError(path, "not a readable gmsh mesh (" + error + ")");
+}
+
+void write_mesh_file(const std::string& path)
+{
+  // gmsh picks the format from the extension, so the temporary keeps ".msh".
+  const std::string temporary = path + ".tmp" + std::to_string(::getpid()) + ".msh";
+  gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+  gmsh::option::setNumber("Mesh.SaveAll", 0);
+  try
+  {
+    gmsh::write(temporary);
+  }
+  catch (...)
+  {
+    std::remove(temporary.c_str());
+    throw;
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+  {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw InputError(path, "cannot write: " + reason);
+  }
 }
 
 void ensure_gmsh()

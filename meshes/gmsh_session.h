@@ -15,6 +15,10 @@ void ensure_gmsh();
 /// if gmsh reports an error while reading it.
 void open_mesh_file(const std::string& path);
 
+/// Inside with_gmsh_model: writes the model's mesh (gmsh .msh 4.1, physical groups only)
+/// atomically: to a temporary beside `path`, then renamed (InputError if that fails).
+void write_mesh_file(const std::string& path);
+
 /// Runs `action` on a fresh gmsh model; any gmsh failure becomes InputError(where, message).
 void with_gmsh_model(const std::string& where, const std::function<void()>& action);
 } // namespace chipflex::meshes
