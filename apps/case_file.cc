@@ -55,6 +55,11 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
                     "not bind and fly apart (experimental: fluid in a corner of Lennard-Jones "
                     "walls counts as spray, docs/sph.md); keep: the plain Tait law everywhere (as "
                     "DualSPHysics).");
+  prm.declare_entry("minimum pressure", "", Anything(),
+                    "Pressure floor p_min <= 0, Pa: p = max(p_Tait, p_min) for every particle, "
+                    "so a stretched particle pair cannot gain more than sqrt(2 |p_min| / rho0) "
+                    "when it snaps (-rho0 g H bounds that by the flow's own sqrt(2 g H); "
+                    "docs/sph.md). Empty: none (the plain Tait law, as DualSPHysics).");
   prm.declare_entry("no slip walls", "false", Bool(),
                     "Dummy wall particles take 2 v_wall - v_fluid at their mirror point across "
                     "the face (the no-slip velocity of the modified DBC, English et al. 2022), "
@@ -282,6 +287,14 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
                                                    : sph::DensityDiffusionModel::molteni_colagrossi;
   f.density_diffusion_delta = prm.get_double("density diffusion delta");
   f.cut_spray_tension = prm.get("spray tension") == "cut";
+  if (!trim(prm.get("minimum pressure")).empty())
+  {
+    const auto p_min = numbers("fluid/minimum pressure", prm.get("minimum pressure"));
+    if (p_min.size() != 1 || !(p_min[0] <= 0))
+      throw InputError("fluid/minimum pressure",
+                       "must be one number <= 0 (Pa), got '" + prm.get("minimum pressure") + "'");
+    f.minimum_pressure = p_min[0];
+  }
   {
     const std::string text = prm.get("density limits");
     const auto limits = trim(text).empty() ? std::vector<double>{0.7 * f.reference_density,

@@ -47,6 +47,7 @@ public:
   double peak_fluid_speed() const override { return fluid_.peak_fluid_speed(); }
   std::string flow_summary() const override { return fluid_.flow_summary(); }
   double peak_fluid_speed_time() const override { return fluid_.peak_fluid_speed_time(); }
+  std::string peak_fluid_speed_where() const override { return fluid_.peak_fluid_speed_where(); }
 
   /// Writes the displacement CSVs; returns one summary line per body (RMS errors, wall time).
   std::string finish(const std::string& output_directory) const override;

@@ -150,6 +150,17 @@ std::string FluidSimulation<dim>::flow_summary() const
          " outflow_particles=" + std::to_string(fluid_->n_outflow());
 }
 
+template <int dim>
+std::string FluidSimulation<dim>::peak_fluid_speed_where() const
+{
+  std::ostringstream s;
+  s << "t = " << fluid_->peak_fluid_speed_time() << " s at (";
+  for (int d = 0; d < dim; ++d)
+    s << (d ? ", " : "") << fluid_->peak_fluid_speed_position()[d];
+  s << ")";
+  return s.str();
+}
+
 template class FluidSimulation<2>;
 template class FluidSimulation<3>;
 } // namespace chipflex::apps

@@ -37,6 +37,7 @@ public:
   }
   double peak_fluid_speed() const override { return fluid_->peak_fluid_speed(); }
   double peak_fluid_speed_time() const override { return fluid_->peak_fluid_speed_time(); }
+  std::string peak_fluid_speed_where() const override;
   std::string flow_summary() const override;
 
   sph::FluidSolver<dim>& fluid() { return *fluid_; }

@@ -259,7 +259,7 @@ int run_command(const Arguments& args)
             << particles.n_frames() << " frames in " << dir
             << "/particles.xdmf; lost_particles=" << sim->n_lost_particles()
             << " peak_fluid_speed_m_s=" << sim->peak_fluid_speed()
-            << " (t = " << sim->peak_fluid_speed_time() << " s)" << sim->flow_summary()
+            << " (" << sim->peak_fluid_speed_where() << ")" << sim->flow_summary()
             << std::endl;
   return 0;
 }

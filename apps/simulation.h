@@ -39,6 +39,8 @@ public:
   /// The largest fluid speed of the run so far, m/s.
   virtual double peak_fluid_speed() const = 0;
   virtual double peak_fluid_speed_time() const = 0;
+  /// Where and when it was: "t = T s at (x, y[, z])".
+  virtual std::string peak_fluid_speed_where() const = 0;
   /// Open boundaries: " inflow_particles=N outflow_particles=M" for the summary line
   /// (particles created by the inlets and removed through the zones), "" without any.
   virtual std::string flow_summary() const { return ""; }

@@ -5,35 +5,17 @@
 
 namespace chipflex::mbs
 {
-RigidChainGate RigidChainGate::seed_table2(int n_links)
-{
-  RigidChainGate g;
-  g.n_links = n_links;
-  switch (n_links)
-  {
-  case 1:
-  case 2:
-    g.spring_rate = 3.95;
-    break;
-  case 3:
-    g.spring_rate = 2.633;
-    break;
-  default:
-    throw InputError("rigid chain gate", "the seed paper's Table 2 has 1, 2 or 3 links, not " +
-                                             std::to_string(n_links));
-  }
-  return g;
-}
-
 Eigen::Vector2d RigidChain::tip_position(const MultibodySystem<2>& system) const
 {
   return system.body(links.back()).point_position(Eigen::Vector2d(0.0, -link_length));
 }
 
-RigidChain add_rigid_chain(MultibodySystem<2>& system, const RigidChainGate& gate)
+RigidChain add_rigid_chain(MultibodySystem<2>& system, const RigidChainSpec& gate)
 {
-  if (gate.n_links < 1 || gate.total_length <= 0)
-    throw InputError("rigid chain gate", "needs at least one link and a positive length");
+  if (gate.n_links < 1)
+    throw InputError("rigid chain", "needs at least one link, got " + std::to_string(gate.n_links));
+  if (!(gate.total_length > 0 && gate.thickness > 0 && gate.density > 0 && gate.spring_rate > 0))
+    throw InputError("rigid chain", "needs a positive length, thickness, density and spring rate");
   RigidChain chain;
   chain.link_length = gate.total_length / gate.n_links;
   const double l = chain.link_length;

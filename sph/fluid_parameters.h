@@ -4,6 +4,7 @@
 // with its unit and default), tests and benchmarks fill it directly.
 
 #include <Eigen/Core>
+#include <limits>
 
 namespace chipflex::sph
 {
@@ -73,6 +74,13 @@ struct FluidParameters
   /// of tests/sph/test_conservation.cc one such particle then passes the wall and is
   /// removed, and the moving Lennard-Jones piston is pulled instead of pushed.
   bool cut_spray_tension = false;
+  /// Pressure floor, Pa (<= 0; -infinity: none, the plain Tait law). Water at a free
+  /// surface cannot hold the tension a stretched SPH particle pair builds (air enters):
+  /// with p >= p_min a pair that snaps apart gains at most sqrt(2 |p_min| / rho0). At
+  /// p_min = -rho0 g H that is sqrt(2 g H), the speed the flow itself can reach, so
+  /// stretched particles are not catapulted while the fluid keeps the small tension its
+  /// free surface needs (docs/sph.md, "Stray particles and spray").
+  double minimum_pressure = -std::numeric_limits<double>::infinity();
   /// Dummy wall particles take 2 v_wall - v_fluid(mirror point) instead of the wall's
   /// velocity (the no-slip velocity of English et al.'s modified DBC, 2022): the
   /// no-slip surface is the wall face, not the first dummy layer half a spacing behind

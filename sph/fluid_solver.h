@@ -191,6 +191,8 @@ public:
   /// Largest fluid speed seen at any force pass of the run so far, m/s, and when.
   double peak_fluid_speed() const { return peak_speed_; }
   double peak_fluid_speed_time() const { return peak_speed_time_; }
+  /// Where the fastest particle was then (tells a method's squeeze from the flow's jet).
+  const Vector& peak_fluid_speed_position() const { return peak_speed_position_; }
   /// Every particle (fluid and boundary) has the mass rho0 dp^dim (2D: per metre).
   double particle_mass() const { return mass_; }
   double speed_of_sound() const { return parameters_.speed_of_sound; }
@@ -242,6 +244,7 @@ private:
   std::vector<OpenBoundary<dim>> zones_;
   std::vector<std::int64_t> zone_created_, zone_removed_;
   double peak_speed_ = 0, peak_speed_time_ = 0;
+  Vector peak_speed_position_ = Vector::Zero();
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -69,6 +69,9 @@ void FluidSolver<dim>::save(Hdf5File& file, const std::string& group) const
   file.write_attribute(group, "n_fluid_created", std::int64_t(n_fluid_created_));
   file.write_attribute(group, "peak_fluid_speed", peak_speed_);
   file.write_attribute(group, "peak_fluid_speed_time", peak_speed_time_);
+  for (int d = 0; d < dim; ++d)
+    file.write_attribute(group, "peak_fluid_speed_position_" + std::to_string(d),
+                         peak_speed_position_[d]);
   const std::size_t nl = lost_.size();
   file.write_attribute(group, "n_lost", std::int64_t(nl));
   if (nl > 0)
@@ -202,12 +205,17 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
   zone_removed_ = removed;
   lost_.clear();
   peak_speed_ = peak_speed_time_ = 0;
+  peak_speed_position_.setZero();
   if (file.has_attribute(group, "n_lost"))
   {
     if (std::size_t(file.read_integer_attribute(group, "n_fluid_created")) != n_fluid_created_)
       throw InputError(where, "checkpoint was written for another fluid set-up");
     peak_speed_ = file.read_double_attribute(group, "peak_fluid_speed");
     peak_speed_time_ = file.read_double_attribute(group, "peak_fluid_speed_time");
+    for (int d = 0; d < dim; ++d)
+      if (file.has_attribute(group, "peak_fluid_speed_position_" + std::to_string(d)))
+        peak_speed_position_[d] =
+            file.read_double_attribute(group, "peak_fluid_speed_position_" + std::to_string(d));
     const std::size_t nl = std::size_t(file.read_integer_attribute(group, "n_lost"));
     if (n + nl + outflow != n_fluid_created_ + p.n_boundary)
       throw InputError(where, "particle and lost-particle counts do not add up");

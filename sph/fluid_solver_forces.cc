@@ -126,11 +126,12 @@ void FluidSolver<dim>::force_pass()
   auto& im = *impl_;
   const std::size_t nb = p.n_boundary, n = p.size();
   const float mass = float(mass_);
+  const float p_min = float(std::max(parameters_.minimum_pressure, -1e30));
 #pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
     const float rho = p.density[i];
-    const float pressure = im.eos.pressure(rho);
+    const float pressure = std::max(im.eos.pressure(rho), p_min);
     p.pressure_term[i] = pressure / (rho * rho);
     p.volume[i] = mass / rho;
   }
@@ -200,6 +201,18 @@ void FluidSolver<dim>::force_pass()
   {
     peak_speed_ = std::sqrt(double(v2_max));
     peak_speed_time_ = time_;
+    for (std::size_t i = nb; i < n; ++i) // rare after the start: the first fastest one
+    {
+      float v2 = 0;
+      for (int d = 0; d < dim; ++d)
+        v2 += p.velocity[d][i] * p.velocity[d][i];
+      if (v2 == v2_max)
+      {
+        for (int d = 0; d < dim; ++d)
+          peak_speed_position_[d] = double(p.position[d][i]);
+        break;
+      }
+    }
   }
   if (!(acceleration_max_ < 1e300)) // NaN or infinite: name the first culprit
     for (std::size_t i = nb; i < n; ++i)

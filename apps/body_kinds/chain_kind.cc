@@ -1,6 +1,6 @@
-// Body kind `chain`: the seed paper's rigid-link gate (1-3 links joined by torsion
-// springs, Table 2 of the elastic-gate benchmark), 2D only, clamped at its top hinge
-// (the body's position).
+// Body kind `chain`: equal rigid links joined by torsion springs, hanging from a clamp
+// hinge at the body's position, 2D only (mbs/rigid_chain.h). The elastic gate's chain
+// variants (cases/elastic_gate/chain*.prm) give it their Table 2 values.
 
 #include "apps/body_kinds/body_kind.h"
 #include "coupling/multibody_coupled_body.h"
@@ -17,29 +17,29 @@ public:
   std::string name() const override { return "chain"; }
   std::string description() const override
   {
-    return "chain (rigid links with torsion springs, Table 2; 2D)";
+    return "chain (rigid links with torsion springs; 2D)";
   }
 
   void declare(BodyKeyDeclarations& keys) const override
   {
-    keys.declare("links", "1", "1|2|3", "Number of links (Table 2 of the elastic gate).");
-    keys.declare("length", "0.079", "double >= 0", "Total length of the chain / strip, m.");
-    keys.declare("thickness", "0.005", "double >= 0", "Thickness of the links / strip, m.");
+    keys.declare("links", "1", "integer >= 1", "Number of equal links.");
+    keys.declare("length", "0", "double >= 0", "Total length of the chain / strip, m (required).");
+    keys.declare("thickness", "0", "double >= 0", "Thickness of the links / strip, m (required).");
     keys.declare("density", "1100", "double >= 0", "kg/m^3.");
     keys.declare("spring rate", "0", "double >= 0",
-                 "Torsion springs, Nm/rad per metre; 0: Table 2's value.");
+                 "Torsion spring at every joint, Nm/rad per metre of depth (required).");
     keys.declare("spring damping", "0", "double >= 0", "Torsion dampers, Nms/rad per metre.");
   }
 
   std::unique_ptr<coupling::CoupledBody<2>> build(const BodyKeys& keys,
                                                   const BodyContext<2>& context) const override
   {
-    auto gate = mbs::RigidChainGate::seed_table2(keys.integer("links"));
+    mbs::RigidChainSpec gate;
+    gate.n_links = keys.integer("links");
     gate.total_length = keys.positive("length");
     gate.thickness = keys.positive("thickness");
     gate.density = keys.positive("density");
-    if (keys.number("spring rate") > 0)
-      gate.spring_rate = keys.number("spring rate");
+    gate.spring_rate = keys.positive("spring rate");
     gate.spring_damping = keys.number("spring damping");
     gate.clamp_point = context.placement.position;
     auto system = make_body_system(context);

@@ -21,8 +21,8 @@ public:
 
   void declare(BodyKeyDeclarations& keys) const override
   {
-    keys.declare("length", "0.079", "double >= 0", "Total length of the chain / strip, m.");
-    keys.declare("thickness", "0.005", "double >= 0", "Thickness of the links / strip, m.");
+    keys.declare("length", "0", "double >= 0", "Total length of the chain / strip, m (required).");
+    keys.declare("thickness", "0", "double >= 0", "Thickness of the links / strip, m (required).");
     keys.declare("density", "1100", "double >= 0", "kg/m^3.");
     keys.declare("youngs modulus", "1.2e7", "double >= 0", "E, Pa (Table 1).");
     keys.declare("poisson ratio", "0.4", "double", "nu, - (Table 1); -1 < nu < 0.5.");

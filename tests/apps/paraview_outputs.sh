@@ -71,9 +71,12 @@ subsection bodies
   subsection body 1
     set name     = gate
     set kind     = chain
-    set links    = 1
-    set position = 0.1025, 0.079
-    set density  = 1100
+    set links       = 1
+    set position    = 0.1025, 0.079
+    set length      = 0.079
+    set thickness   = 0.005
+    set density     = 1100
+    set spring rate = 3.95
     set implicit = false
   end
 end

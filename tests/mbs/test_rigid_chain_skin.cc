@@ -6,6 +6,7 @@
 #include "mbs/multibody_system.h"
 #include "mbs/rigid_body.h"
 #include "mbs/rigid_chain.h"
+#include "elastic_gate_chain.h"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -45,7 +46,7 @@ struct PosedChain
   RigidChain chain;
   std::vector<std::vector<Point>> skins; ///< world outline of every link
 
-  PosedChain(const RigidChainGate& gate, const std::vector<double>& angles)
+  PosedChain(const RigidChainSpec& gate, const std::vector<double>& angles)
   {
     chain = add_rigid_chain(system, gate);
     Point hinge = gate.clamp_point;
@@ -64,7 +65,7 @@ struct PosedChain
 /// The largest gap, over the links' turns, between a link's outline and the corners that
 /// close the fluid's boundary at its hinges: the wall's bottom corners at the clamp
 /// (clamp_point +- (h, 0)), and each neighbour link's corners at a joint.
-double largest_hinge_gap(const RigidChainGate& gate)
+double largest_hinge_gap(const RigidChainSpec& gate)
 {
   const double h = 0.5 * gate.thickness;
   double gap = 0;
@@ -99,7 +100,7 @@ TEST_CASE("Rounded hinge ends keep the chain gate's skin closed at every angle",
 {
   for (int links : {1, 2, 3})
   {
-    RigidChainGate gate = RigidChainGate::seed_table2(links);
+    RigidChainSpec gate = testing::elastic_gate_chain(links);
     gate.clamp_point = Point(0.1025, 0.079);
     const double h = 0.5 * gate.thickness;
     // The gap the polygonal half circle leaves: its sag h (1 - cos(pi / 16)) at 8 segments.

@@ -5,6 +5,7 @@
 #include "mbs/multibody_system.h"
 #include "mbs/rigid_body.h"
 #include "mbs/rigid_chain.h"
+#include "elastic_gate_chain.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -166,7 +167,7 @@ double chain_static_tip(int n_links, double force)
   IntegratorOptions opt;
   opt.rho_infinity = 0.5;
   MultibodySystem<2> system(opt);
-  RigidChainGate gate = RigidChainGate::seed_table2(n_links);
+  RigidChainSpec gate = testing::elastic_gate_chain(n_links);
   gate.spring_damping = 0.05;
   const RigidChain chain = add_rigid_chain(system, gate);
   // the force at the middle of the free edge, split on the two tip corners
@@ -188,7 +189,7 @@ TEST_CASE("Rigid-chain gates under a static tip force: F L^2 / c and the n-link 
   const double k2[] = {1, 5, 14};
   for (int n = 1; n <= 3; ++n)
   {
-    const RigidChainGate gate = RigidChainGate::seed_table2(n);
+    const RigidChainSpec gate = testing::elastic_gate_chain(n);
     const double l = gate.total_length / n, c = gate.spring_rate;
     const double f_small = 1e-4 * c / (n * l);
     const double linear = k2[n - 1] * f_small * l * l / c;
@@ -209,7 +210,7 @@ TEST_CASE("Multibody checkpoint restores the run bit for bit", "[mbs][chain]")
 {
   MultibodySystem<2> system;
   system.set_gravity({0, -g0});
-  const RigidChain chain = add_rigid_chain(system, RigidChainGate::seed_table2(3));
+  const RigidChain chain = add_rigid_chain(system, testing::elastic_gate_chain(3));
   system.body(chain.links[0]).set_frame_velocity({0, 0}, Eigen::Matrix<double, 1, 1>(5.0));
   for (int s = 0; s < 50; ++s)
     system.step(2e-4);
@@ -231,7 +232,7 @@ TEST_CASE("Multibody checkpoint restores the run bit for bit", "[mbs][chain]")
 TEST_CASE("A chain's composite skin moves with its links and splits its forces", "[mbs][chain]")
 {
   MultibodySystem<2> system;
-  const RigidChain chain = add_rigid_chain(system, RigidChainGate::seed_table2(2));
+  const RigidChain chain = add_rigid_chain(system, testing::elastic_gate_chain(2));
   std::vector<FloatingFrameBody<2>*> links;
   for (int l : chain.links)
     links.push_back(&system.body(l));
