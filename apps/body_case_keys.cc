@@ -112,11 +112,6 @@ void declare_body_keys(ParameterHandler& prm, int n_bodies)
   prm.declare_entry("count", "0", Integer(0),
                     "Number of bodies, declared in `subsection body 1` ... `body N`; 0: every "
                     "body subsection of the file.");
-  prm.declare_entry("reference", "", Anything(),
-                    "CSV (time_s, dx_m, dy_m) the first body's probe displacement is compared "
-                    "with (RMS in the summary), e.g. the elastic gate's experiment; empty: none.");
-  prm.declare_entry("error window", "0.04, 0.36", Anything(),
-                    "Reference frames inside [begin, end] enter the RMS error, s.");
   for (int b = 1; b <= std::max(1, n_bodies); ++b)
   {
     prm.enter_subsection("body " + std::to_string(b));
@@ -156,15 +151,6 @@ BodyCase<dim> read_body_case(ParameterHandler& prm, const std::string& case_path
   const KindKeys kind_keys = declare_kinds(scratch);
   BodyCase<dim> c;
   prm.enter_subsection("bodies");
-  const std::string reference = prm.get("reference");
-  {
-    BodyKeys keys(prm, case_path + ": bodies", case_path);
-    const auto window = keys.numbers("error window", 2);
-    c.error_window_begin = window[0];
-    c.error_window_end = window[1];
-    if (!reference.empty())
-      c.reference_file = keys.file("reference");
-  }
   for (int b = 1; b <= count; ++b)
   {
     const std::string where = case_path + ": bodies, body " + std::to_string(b);

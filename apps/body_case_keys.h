@@ -37,10 +37,6 @@ template <int dim>
 struct BodyCase
 {
   std::vector<CaseBody<dim>> bodies;
-  /// Reference curve (time_s, dx_m, dy_m) for the probe of the first body, empty: none
-  /// (the elastic gate's experiment).
-  std::string reference_file;
-  double error_window_begin = 0.04, error_window_end = 0.36; ///< s
 };
 
 /// The highest N of a `subsection body N` in the case file's text (0: none), so that

@@ -3,7 +3,6 @@
 #include "common/atomic_output.h"
 #include "common/hdf5_file.h"
 #include "common/input_error.h"
-#include "coupling/displacement_history.h"
 #include "coupling/fluid_overlap.h"
 
 #include <Eigen/Geometry>
@@ -264,22 +263,6 @@ std::string CoupledSimulation<dim>::finish(const std::string& output_directory) 
       output.commit();
     }
     line << "summary: body=" << body.name << " kind=" << body.body->kind();
-    if (b == 0 && !case_.reference_file.empty())
-    {
-      coupling::DisplacementHistory planar;
-      for (const auto& s : h)
-        planar.append(s[0], s[1], s[2]);
-      const auto reference = coupling::DisplacementHistory::read_csv(case_.reference_file);
-      if (time() + 1e-9 >= case_.error_window_end)
-      {
-        const auto e =
-            planar.rms_error(reference, case_.error_window_begin, case_.error_window_end);
-        line << " rms_dx_mm=" << e.rms_dx * 1e3 << " rms_dy_mm=" << e.rms_dy * 1e3
-             << " frames=" << e.frames;
-      }
-      else
-        line << " rms=n/a(run ends before " << case_.error_window_end << " s)";
-    }
     Vector largest = Vector::Zero();
     for (const auto& s : h)
       for (int d = 0; d < dim; ++d)

@@ -16,7 +16,8 @@ fail() { echo "FAIL: $*"; exit 1; }
 CHIPFLEX=$chipflex "$repo/cases/elastic_gate/run_benchmark.sh" "$dir" 2 flexible > "$dir/out.txt" 2>&1 ||
   { cat "$dir/out.txt"; fail "the benchmark script failed"; }
 cat "$dir/out.txt"
-grep -q '^summary: variant=flexible .*rms_dx_mm=' "$dir/out.txt" || fail "no summary line"
+grep -q '^summary: variant=flexible ' "$dir/out.txt" || fail "no summary line"
+grep -q '^rms: run=flexible rms_dx_mm=' "$dir/out.txt" || fail "no RMS line"
 [ -s "$dir/elastic_gate.png" ] || fail "no plot"
 csv=$dir/flexible/gate_displacement.csv
 [ -s "$csv" ] || fail "no displacement history"
