@@ -7,7 +7,8 @@
 #     DP_MM    fluid particle spacing in mm (default 1; the SPH solid keeps Table 1's 1 mm)
 #     VARIANT  flexible chain1 chain2 chain3 sph_solid (default: all)
 #   Environment: CHIPFLEX (default build/bin/chipflex), THREADS (default: all cores),
-#   MODES (modes kept of the 8 normal + 1 static correction mode; default all).
+#   MODES (modes kept of the 8 normal + 1 static correction mode + modal derivatives of
+#   the nonlinear gate; default all).
 set -e
 if [ $# -lt 1 ]; then
   sed -n '2,11p' "$0"
@@ -26,7 +27,8 @@ out=$(cd "$out" && pwd)
 cd "$out"
 if [ ! -f gate.h5 ]; then
   "$chipflex" mesh gate -o gate.msh
-  "$chipflex" reduce gate.msh -o gate.h5 --clamp clamp --modes 8 --static-modes pressure:xmin
+  "$chipflex" reduce gate.msh -o gate.h5 --clamp clamp --modes 8 --static-modes pressure:xmin \
+    --nonlinear
 fi
 dp=$(awk "BEGIN { print $dp_mm / 1000 }")
 for v in $variants; do

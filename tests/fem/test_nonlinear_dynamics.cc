@@ -15,8 +15,6 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 using namespace chipflex;
 using namespace chipflex::fem;
@@ -122,13 +120,6 @@ std::vector<double> spin_up(const ReducedBodyData& data, const KaneBeam& beam, d
     body.set_clamp_rotation(Eigen::Matrix<double, 1, 1>(beam.rate(t)),
                             Eigen::Matrix<double, 1, 1>(beam.acceleration(t)));
     system.step(h);
-    if (std::getenv("KANE_DEBUG") && step % std::lround(0.25 / h) == 0)
-    {
-      const Eigen::Vector2d u =
-          data.psi.middleRows(2 * tip, 2).leftCols(body.n_modes()) * body.modal_coordinates();
-      std::printf("t %g tip %g %g it %d |q| %g\n", t, u.x(), u.y(), system.last_newton_iterations(),
-                  body.modal_coordinates().norm());
-    }
     if (std::abs(t - at[next]) < 0.5 * h)
     {
       const Eigen::Vector2d u =
