@@ -228,7 +228,7 @@ void FeBodyModel<dim>::restore(const std::vector<double>& state)
       v[k](dof) = state[k * n + dof];
     v[k].compress(VectorOperation::insert);
   }
-  impl->model.set_state(v[0], v[1], v[2], v[3]);
+  impl->model.set_state(impl->options, v[0], v[1], v[2], v[3]);
 }
 
 template class FeBodyModel<2>;

@@ -272,9 +272,11 @@ void NonlinearElasticBody<dim>::start_dynamics(const DynamicsOptions& options, c
 }
 
 template <int dim>
-void NonlinearElasticBody<dim>::set_state(const DofVector& u, const DofVector& v,
-                                          const DofVector& a, const DofVector& force)
+void NonlinearElasticBody<dim>::set_state(const DynamicsOptions& options, const DofVector& u,
+                                          const DofVector& v, const DofVector& a,
+                                          const DofVector& force)
 {
+  dynamics_ = options;
   u_ = u;
   v_ = v;
   a_ = a;

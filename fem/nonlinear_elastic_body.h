@@ -103,9 +103,10 @@ public:
   const DofVector& acceleration() const { return a_; }
   /// The load of the last step (or of start_dynamics), at the current time.
   const DofVector& last_force() const { return force_; }
-  /// Restores a state saved from displacement(), velocity(), acceleration() and the load.
-  void set_state(const DofVector& u, const DofVector& v, const DofVector& a,
-                 const DofVector& force);
+  /// Restores a state saved from displacement(), velocity(), acceleration() and the load,
+  /// with the options start_dynamics() was given.
+  void set_state(const DynamicsOptions& options, const DofVector& u, const DofVector& v,
+                 const DofVector& a, const DofVector& force);
   double kinetic_energy() const;
 
 private:
