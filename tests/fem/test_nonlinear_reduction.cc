@@ -7,6 +7,8 @@
 
 #include "common/polynomial_stiffness.h"
 #include "common/reduced_body_file.h"
+#include "fem/gmsh_reader.h"
+#include "fem/nonlinear_elastic_body.h"
 #include "fem_test_support.h"
 
 #include <catch2/catch.hpp>
@@ -225,4 +227,84 @@ TEST_CASE("nonlinear reduced 3D strip follows the elastica at P L^2/EI = 2", "[f
                     << " " << ref.w << ", tip position error " << 100 * error << " %");
   CHECK(std::abs(tip_u.y()) < 1e-6 * length); // symmetric: no sideways motion
   CHECK(error < 0.01);
+}
+
+TEST_CASE("nonlinear reduced cantilever against the full nonlinear FE model", "[fem][nonlinear]")
+{
+  // The same mesh, material (St Venant-Kirchhoff) and consistent dead tip load for both:
+  // what differs is only the reduction (u = Psi q with 4 modes + 1 static + 9 derivatives).
+  const Beam beam;
+  meshes::BlockMeshSpec spec;
+  spec.dim = 2;
+  spec.extent = {beam.length, beam.thickness, 0};
+  spec.long_axis = 0;
+  spec.clamp_at_max = false;
+  spec.size = beam.thickness / 2;
+  const std::string mesh_file = scratch("elastica_beam_full.msh");
+  meshes::write_block_mesh(spec, mesh_file);
+  Material material;
+  material.youngs_modulus = beam.e;
+  material.poisson_ratio = beam.nu;
+  material.density = beam.rho;
+  material.plane_stress = true;
+
+  ReductionSettings s;
+  s.mesh_file = mesh_file;
+  s.clamp_group = "clamp";
+  s.material = material;
+  s.n_modes = 4;
+  s.static_modes = {"force:tip:0,-1"};
+  s.nonlinear = true;
+  s.derivative_modes = 4;
+  const ReducedBodyData reduced = reduce_body(s);
+  const PolynomialStiffness svk(reduced.stiffness_matrix, reduced.quadratic_stiffness,
+                                reduced.cubic_stiffness);
+  const int m = reduced.n_modes();
+
+  const GmshMeshData mesh = read_gmsh_mesh(mesh_file);
+  NonlinearElasticBody<2> full(mesh, material, HyperelasticModel::st_venant_kirchhoff, 2, "clamp",
+                               MPI_COMM_WORLD);
+  const auto& tip = reduced.node_sets.at("tip");
+  int centre = tip[0];
+  for (const int node : tip)
+    if (std::abs(reduced.nodes(node, 1) - beam.thickness / 2) <
+        std::abs(reduced.nodes(centre, 1) - beam.thickness / 2))
+      centre = node;
+  // the node order of both is the walk over the same cells: the same ids
+  REQUIRE((full.body().node_coordinates[centre][0] - reduced.nodes(centre, 0)) ==
+          Approx(0).margin(1e-12));
+  const LoadCase unit = LoadCase::parse("force:tip:0,-1", 2, "test");
+  const Eigen::VectorXd unit_modal =
+      reduced.psi.transpose() * full.body().to_nodal(full.body().load_vector(unit));
+
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(m), f(m);
+  Eigen::MatrixXd kt;
+  double alpha = 0;
+  for (const double target : {1., 2., 5., 10.})
+  {
+    const double p = target * beam.ei() / std::pow(beam.length, 2);
+    while (alpha < target - 1e-12) // reduced: Newton in load steps of 0.25
+    {
+      alpha = std::min(target, alpha + 0.25);
+      const Eigen::VectorXd load = alpha * beam.ei() / std::pow(beam.length, 2) * unit_modal;
+      for (int it = 0;; ++it)
+      {
+        REQUIRE(it < 50);
+        svk.evaluate(q, f, &kt);
+        const Eigen::VectorXd dq = kt.ldlt().solve(load - f);
+        q += dq;
+        if (dq.norm() <= 1e-12 * q.norm())
+          break;
+      }
+    }
+    const Eigen::Vector2d u_reduced = reduced.psi.middleRows(2 * centre, 2) * q;
+    const Eigen::VectorXd u_full = full.solve_static(
+        LoadCase::parse("force:tip:0," + std::to_string(-p), 2, "test"), 10 * unsigned(target));
+    const Eigen::Vector2d tip_full = u_full.segment<2>(2 * centre);
+    const double error = (u_reduced - tip_full).norm() / tip_full.norm();
+    WARN("P L^2/EI = " << target << ": tip displacement reduced (" << u_reduced.transpose()
+                       << "), full FE (" << tip_full.transpose() << "), difference " << 100 * error
+                       << " %");
+    CHECK(error < 0.02);
+  }
 }
