@@ -9,6 +9,7 @@
 #include "common/input_error.h"
 #include "compare/compare_with_full.h"
 #include "fem/blas_threads.h"
+#include "fem/hyperelastic_model.h"
 
 #include <deal.II/base/mpi.h>
 #include <fstream>
@@ -22,12 +23,18 @@ int compare_command(const Arguments& args)
   CommandLine cl("chipflex compare MESH.msh BODY.h5 --load force:GROUP:fx,fy[,fz] [options]",
                  "Compare a clamped reduced body with the full FE model: static response and a\n"
                  "step load (Newmark average acceleration) on both, at the centroid of the loaded\n"
-                 "group's nodes.");
+                 "group's nodes. With --nonlinear the full model is geometrically nonlinear\n"
+                 "(a large load: Newton statics, Newton on every step).");
   cl.add_positional("MESH", "the mesh the body was reduced from");
   cl.add_positional("BODY", "body file from chipflex reduce (clamped)");
   cl.add_option("--load", "LOAD", "force:GROUP:fx,fy[,fz] (total force, N; 2D: N/m)", "", true);
   cl.add_option("--duration", "S", "transient length (default: 5 periods of the lowest mode)");
   cl.add_option("--dt", "S", "time step (default: 1/40 of the lowest mode's period)");
+  cl.add_flag("--nonlinear",
+              "full side geometrically nonlinear (total Lagrangian, the load a dead load); "
+              "the reduced side's static response its own equilibrium (dynamic relaxation)");
+  cl.add_option("--material", "MODEL", "--nonlinear: svk or neo-hooke", "svk");
+  cl.add_option("--increments", "N", "--nonlinear: static load increments", "10");
   cl.add_flag("--json", "print one JSON object");
   cl.add_option("--output", "CSV", "time histories of both models");
   cl.add_option("--blas-threads", "N",
@@ -48,6 +55,12 @@ int compare_command(const Arguments& args)
     throw InputError("--duration", "must be positive");
   if (cl.has("--dt") && !((settings.time_step = cl.get_double("--dt")) > 0))
     throw InputError("--dt", "must be positive");
+  settings.nonlinear = cl.flag("--nonlinear");
+  settings.material_model = cl.get("--material");
+  fem::parse_hyperelastic_model(settings.material_model, "--material");
+  if (cl.get_int("--increments") < 1)
+    throw InputError("--increments", "must be at least 1");
+  settings.load_increments = static_cast<unsigned int>(cl.get_int("--increments"));
 
   int argc = 1;
   std::string name = "chipflex";

@@ -17,7 +17,11 @@ void print_json(const ReducedBodyData& b)
 {
   std::ostringstream o;
   o << "{\n";
-  o << "  \"format_version\": " << ReducedBodyData::format_version << ",\n";
+  o << "  \"format_version\": " << b.file_version << ",\n";
+  o << "  \"elastic_model\": " << json_string(b.nonlinear() ? "nonlinear" : "linear") << ",\n";
+  o << "  \"n_modal_derivatives\": " << b.n_modal_derivatives << ",\n";
+  o << "  \"n_nonlinear_coefficients\": " << b.quadratic_stiffness.size() + b.cubic_stiffness.size()
+    << ",\n";
   o << "  \"dim\": " << b.dim << ",\n";
   o << "  \"model\": " << json_string(b.model) << ",\n";
   o << "  \"youngs_modulus\": " << json_number(b.youngs_modulus) << ",\n";
@@ -57,8 +61,8 @@ void print_text(const std::string& path, const ReducedBodyData& b)
 {
   std::ostringstream o;
   o << std::setprecision(6);
-  o << path << ": reduced floating-frame body, format v" << ReducedBodyData::format_version << ", "
-    << b.dim << "D " << b.model << (b.dim == 2 ? " (per metre of depth)" : "") << "\n";
+  o << path << ": reduced floating-frame body, format v" << b.file_version << ", " << b.dim << "D "
+    << b.model << (b.dim == 2 ? " (per metre of depth)" : "") << "\n";
   o << "  material     E = " << b.youngs_modulus << " Pa, nu = " << b.poisson_ratio
     << ", rho = " << b.density << " kg/m^3\n";
   o << "  mesh         " << b.mesh_file << " (hash " << b.mesh_hash << "), degree "
@@ -73,7 +77,16 @@ void print_text(const std::string& path, const ReducedBodyData& b)
   o << "  inertia      about the centre of mass, kg m^2" << (b.dim == 2 ? "/m" : "") << "\n";
   for (int i = 0; i < 3; ++i)
     o << "               " << b.inertia_tensor.row(i) << "\n";
-  o << "  modes        " << b.n_modes() << "\n";
+  o << "  elasticity   "
+    << (b.nonlinear() ? "nonlinear (St Venant-Kirchhoff, cubic in q: " +
+                            std::to_string(b.quadratic_stiffness.size()) + " quadratic + " +
+                            std::to_string(b.cubic_stiffness.size()) + " cubic coefficients)"
+                      : std::string("linear (K_red q)"))
+    << "\n";
+  o << "  modes        " << b.n_modes() << " basis vectors";
+  if (b.nonlinear())
+    o << ", of which " << b.n_modal_derivatives << " modal derivatives";
+  o << "\n";
   for (int k = 0; k < b.n_modes(); ++k)
     o << "    " << std::setw(3) << k + 1 << "  " << std::setw(12) << b.frequencies_hz[k] << " Hz  "
       << b.mode_kinds[k] << "\n";

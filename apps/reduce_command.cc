@@ -50,7 +50,7 @@ std::vector<std::string> petsc_arguments(const std::string& options)
 int reduce_command(const Arguments& args)
 {
   CommandLine cl("chipflex reduce MESH.msh -o BODY.h5 [options]",
-                 "Reduce a gmsh mesh to a floating-frame body file (HDF5, format v1): consistent\n"
+                 "Reduce a gmsh mesh to a floating-frame body file (HDF5, format v2): consistent\n"
                  "mass and stiffness (deal.II), elastic normal modes (SLEPc Krylov-Schur,\n"
                  "shift-and-invert, MUMPS), optional static correction modes, a mass-orthonormal\n"
                  "basis and the inertia invariants. Works under mpirun -np N.");
@@ -66,6 +66,12 @@ int reduce_command(const Arguments& args)
   cl.add_option("--modes", "N", "number of elastic normal modes", "10");
   cl.add_repeated_option("--static-modes", "LIST",
                          "static correction modes, e.g. pressure:skin,force:tip:0,-1");
+  cl.add_flag("--nonlinear",
+              "geometrically nonlinear body (St Venant-Kirchhoff): modal derivatives join the "
+              "basis, the file gets the reduced internal force as a cubic polynomial");
+  cl.add_option("--modal-derivatives", "N",
+                "with --nonlinear: derivatives of the first N normal modes, all N(N+1)/2 pairs "
+                "(default min(--modes, 5))");
   cl.add_option("--degree", "P", "element degree, 1 or 2", "2");
   cl.add_flag("--straight-sided",
               "ignore a second-order mesh's curved geometry: straight-sided cells through the "
@@ -102,6 +108,17 @@ int reduce_command(const Arguments& args)
   if (modes < 1)
     throw InputError("--modes", "must be at least 1, got " + std::to_string(modes));
   settings.n_modes = modes;
+  settings.nonlinear = cl.flag("--nonlinear");
+  if (cl.has("--modal-derivatives"))
+  {
+    if (!settings.nonlinear)
+      throw InputError("--modal-derivatives", "needs --nonlinear");
+    const long n = cl.get_int("--modal-derivatives");
+    if (n < 1 || n > modes)
+      throw InputError("--modal-derivatives", "must lie in 1..--modes (" + std::to_string(modes) +
+                                                  "), got " + std::to_string(n));
+    settings.derivative_modes = n;
+  }
   const long degree = cl.get_int("--degree");
   if (degree != 1 && degree != 2)
     throw InputError("--degree", "must be 1 or 2, got " + std::to_string(degree));
@@ -134,7 +151,12 @@ int reduce_command(const Arguments& args)
     std::cout << "wrote " << output << ": " << body.dim << "D, " << body.n_nodes() << " nodes, "
               << timings.n_dofs << " DoFs, "
               << (body.clamp_set.empty() ? "free-free" : "clamped at '" + body.clamp_set + "'")
-              << ", mass " << body.mass << " kg" << (body.dim == 2 ? "/m" : "") << "\n";
+              << ", mass " << body.mass << " kg" << (body.dim == 2 ? "/m" : "") << ", "
+              << (body.nonlinear()
+                      ? "nonlinear (St Venant-Kirchhoff, " +
+                            std::to_string(body.n_modal_derivatives) + " modal derivatives)"
+                      : std::string("linear"))
+              << "\n";
     for (int k = 0; k < body.n_modes(); ++k)
       std::cout << "  mode " << std::setw(2) << k + 1 << "  " << std::setw(12)
                 << std::setprecision(6) << body.frequencies_hz[k] << " Hz  " << body.mode_kinds[k]
@@ -143,7 +165,10 @@ int reduce_command(const Arguments& args)
               << timings.setup << ", assembly " << timings.assembly << ", factorisation "
               << timings.factorisation << ", eigen solve " << timings.eigen_solve
               << ", static modes " << timings.static_modes << ", basis " << timings.basis
-              << ", invariants " << timings.post_processing << "\n";
+              << ", invariants " << timings.post_processing;
+    if (body.nonlinear())
+      std::cout << " (of which nonlinear coefficients " << timings.nonlinear << ")";
+    std::cout << "\n";
   }
   return 0;
 }

@@ -7,6 +7,7 @@
 
 #include "apps/command_line.h"
 #include "bench/benchmarks.h"
+#include "common/polynomial_stiffness.h"
 #include "common/reduced_body_file.h"
 #include "mbs/multibody_system.h"
 #include "mbs/rigid_chain.h"
@@ -119,6 +120,28 @@ ReducedBodyData synthetic_body(int n_modes)
   return d;
 }
 
+/// The same body with and without the St Venant-Kirchhoff polynomial: a nonlinear file as
+/// read and with its /nonlinear part dropped; a linear one as read and with made-up
+/// coefficients (deterministic, small enough that Newton converges as for a real body; the
+/// cost depends on the number of modes only).
+std::pair<ReducedBodyData, ReducedBodyData> linear_and_nonlinear(const ReducedBodyData& data)
+{
+  ReducedBodyData linear = data, nonlinear = data;
+  linear.quadratic_stiffness.clear();
+  linear.cubic_stiffness.clear();
+  if (!data.nonlinear())
+  {
+    const int m = data.n_modes();
+    const Eigen::VectorXd k = data.stiffness_matrix.diagonal().cwiseAbs().cwiseSqrt();
+    nonlinear.quadratic_stiffness = PolynomialStiffness::pack_triples(
+        m, [&](int i, int j, int l) { return 1e-2 * k(i) * k(j) * k(l) / k.maxCoeff(); });
+    nonlinear.cubic_stiffness = PolynomialStiffness::pack_quadruples(
+        m, [&](int i, int j, int l, int n)
+        { return 1e-2 * k(i) * k(j) * k(l) * k(n) / (k.maxCoeff() * k.maxCoeff()); });
+  }
+  return {linear, nonlinear};
+}
+
 /// CPU time of this process (one thread here): on a shared machine it excludes the time
 /// the scheduler gives to others, which the wall time does not.
 double cpu_seconds()
@@ -205,7 +228,8 @@ int mbs_step_benchmark(const Arguments& args)
 {
   apps::CommandLine cl("chipflex bench mbs [options]",
                        "wall time per implicit step (generalised-alpha, 1e-5 s): a 3D "
-                       "flexible body with 20 modes (clamped and free) and a 3-link chain; "
+                       "flexible body with 20 modes (clamped and free, linear and nonlinear "
+                       "St Venant-Kirchhoff) and a 3-link chain; "
                        "target <= 20 us per step of the 20-mode body on one core");
   cl.add_option("--body", "FILE", "reduced body file (default: synthetic 3D strip)");
   cl.add_option("--modes", "N", "modes of the synthetic body", "20");
@@ -224,16 +248,20 @@ int mbs_step_benchmark(const Arguments& args)
     std::printf("(synthetic body: lumped mass and made-up modes; pass --body FILE for a "
                 "reduced body file)\n");
   double it = 0;
-  for (bool clamped : {true, false})
-  {
-    std::string state;
-    const double us = data.dim == 3 ? flexible_body_step<3>(data, clamped, steps, reuse, it, state)
-                                    : flexible_body_step<2>(data, clamped, steps, reuse, it, state);
-    std::printf("flexible body, %-18s %8.2f us/step wall, %8.2f us CPU  (%.2f Newton "
-                "iterations/step)\n%s\n",
-                clamped ? "clamped to ground" : "free-floating", us, last_cpu_us, it,
-                state.c_str());
-  }
+  const auto [linear, nonlinear] = linear_and_nonlinear(data);
+  for (const ReducedBodyData* body : {&linear, &nonlinear})
+    for (bool clamped : {true, false})
+    {
+      std::string state;
+      const double us = data.dim == 3
+                            ? flexible_body_step<3>(*body, clamped, steps, reuse, it, state)
+                            : flexible_body_step<2>(*body, clamped, steps, reuse, it, state);
+      std::printf("flexible body, %-9s %-18s %8.2f us/step wall, %8.2f us CPU  (%.2f Newton "
+                  "iterations/step)\n%s\n",
+                  body->nonlinear() ? "nonlinear" : "linear",
+                  clamped ? "clamped to ground" : "free-floating", us, last_cpu_us, it,
+                  state.c_str());
+    }
 
   // skin exchange with the fluid, once per fluid step
   {

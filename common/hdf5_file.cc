@@ -76,16 +76,16 @@ std::string parent_of(const std::string& path)
 Hdf5File::Hdf5File(const std::string& path, Mode mode) : path_(path)
 {
   silence_hdf5();
-  if (mode == Mode::read)
+  if (mode != Mode::create)
   {
     if (H5Fis_hdf5(path.c_str()) <= 0)
       throw InputError(path, "not a readable HDF5 file (missing, truncated or corrupted)");
-    file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    file_ = H5Fopen(path.c_str(), mode == Mode::read ? H5F_ACC_RDONLY : H5F_ACC_RDWR, H5P_DEFAULT);
   }
   else
     file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file_ < 0)
-    throw InputError(path, mode == Mode::read ? "cannot open HDF5 file" : "cannot create file");
+    throw InputError(path, mode == Mode::create ? "cannot create file" : "cannot open HDF5 file");
 }
 
 Hdf5File::~Hdf5File()

@@ -18,7 +18,8 @@ public:
   enum class Mode
   {
     read,
-    create /// truncates
+    create, /// truncates
+    update  /// an existing file, read and write (e.g. to patch an attribute)
   };
   Hdf5File(const std::string& path, Mode mode);
   ~Hdf5File();

@@ -3,6 +3,7 @@
 #include "common/atomic_output.h"
 #include "common/hdf5_file.h"
 #include "common/input_error.h"
+#include "common/polynomial_stiffness.h"
 
 #include <cstdio>
 #include <fstream>
@@ -144,6 +145,16 @@ void write_reduced_body(const std::string& path, const ReducedBodyData& b)
     f.write("/inertia/translation_coupling", row_major(b.translation_coupling), {dim, m});
     f.write("/inertia/c_x_psi", stack(b.c_x_psi), {m, dim, dim});
     f.write("/inertia/c_psi_psi", stack(b.c_psi_psi), {m, m, dim, dim});
+    if (b.nonlinear())
+    {
+      if (b.quadratic_stiffness.size() != n_sorted_triples(m) ||
+          b.cubic_stiffness.size() != n_sorted_quadruples(m))
+        throw std::logic_error("write_reduced_body: nonlinear coefficients do not match the modes");
+      f.write_attribute("/nonlinear", "model", std::string("st_venant_kirchhoff"));
+      f.write_attribute("/nonlinear", "n_modal_derivatives", std::int64_t(b.n_modal_derivatives));
+      f.write("/nonlinear/quadratic", b.quadratic_stiffness, {b.quadratic_stiffness.size()});
+      f.write("/nonlinear/cubic", b.cubic_stiffness, {b.cubic_stiffness.size()});
+    }
   }
   output.commit();
 }
@@ -153,10 +164,10 @@ ReducedBodyData read_reduced_body(const std::string& path)
   Hdf5File f(path, Hdf5File::Mode::read);
   ReducedBodyData b;
   const auto version = f.read_integer_attribute("/meta", "format_version");
-  if (version != ReducedBodyData::format_version)
+  if (version != 1 && version != 2)
     throw InputError(path + ":/meta@format_version",
-                     "version " + std::to_string(version) + " is not supported (expected " +
-                         std::to_string(ReducedBodyData::format_version) + ")");
+                     "version " + std::to_string(version) + " is not supported (expected 1 or 2)");
+  b.file_version = static_cast<int>(version);
   b.dim = static_cast<int>(f.read_integer_attribute("/meta", "dim"));
   if (b.dim != 2 && b.dim != 3)
     throw InputError(path + ":/meta@dim", "must be 2 or 3, found " + std::to_string(b.dim));
@@ -216,6 +227,18 @@ ReducedBodyData read_reduced_body(const std::string& path)
       from_row_major(read_checked(f, "/inertia/translation_coupling", {dim, m}), dim, m);
   b.c_x_psi = unstack(read_checked(f, "/inertia/c_x_psi", {m, dim, dim}), m, dim, dim);
   b.c_psi_psi = unstack(read_checked(f, "/inertia/c_psi_psi", {m, m, dim, dim}), m * m, dim, dim);
+  if (version >= 2 && f.exists("/nonlinear"))
+  {
+    const auto model = f.read_string_attribute("/nonlinear", "model");
+    if (model != "st_venant_kirchhoff")
+      throw InputError(path + ":/nonlinear@model", "unknown model '" + model + "'");
+    b.n_modal_derivatives =
+        static_cast<int>(f.read_integer_attribute("/nonlinear", "n_modal_derivatives"));
+    if (b.n_modal_derivatives < 0 || b.n_modal_derivatives > static_cast<int>(m))
+      throw InputError(path + ":/nonlinear@n_modal_derivatives", "outside 0..number of modes");
+    b.quadratic_stiffness = read_checked(f, "/nonlinear/quadratic", {n_sorted_triples(m)});
+    b.cubic_stiffness = read_checked(f, "/nonlinear/cubic", {n_sorted_quadruples(m)});
+  }
   return b;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
-// The reduced floating-frame body file, format version 1: the only contract between
-// fem/ (which writes it, `chipflex reduce`) and mbs/ (which reads it). Both sides use
-// this one reader/writer so that they agree byte for byte. Schema and the meaning of
-// every quantity: docs/body_file_format.md.
+// The reduced floating-frame body file, format version 2 (version 1 still read): the only contract
+// between fem/ (which writes it, `chipflex reduce`) and mbs/ (which reads it). Both sides use this
+// one reader/writer so that they agree byte for byte. Schema and the meaning of every quantity:
+// docs/body_file_format.md.
 //
 // Notation (docs/body_file_format.md): n nodes with reference positions x_i, the
 // consistent mass matrix of the vector problem M = Ms (x) I_dim with the scalar mass
@@ -21,7 +21,10 @@ namespace chipflex
 {
 struct ReducedBodyData
 {
-  static constexpr int format_version = 1;
+  /// Written: 2. Read: 1 (linear bodies) and 2 (optionally with /nonlinear).
+  static constexpr int format_version = 2;
+  /// the version of the file read (read_reduced_body); written files are format_version
+  int file_version = format_version;
 
   // ---- /meta
   int dim = 0;
@@ -61,6 +64,13 @@ struct ReducedBodyData
   std::vector<Eigen::MatrixXd> c_x_psi;   ///< m entries: C(x, psi_k)
   std::vector<Eigen::MatrixXd> c_psi_psi; ///< m*m entries, index k*m+l: C(psi_k, psi_l)
 
+  // ---- /nonlinear (version 2, optional): the reduced St Venant-Kirchhoff internal force
+  // f(q) = K q + Q:(q q) + C:(q q q) (common/polynomial_stiffness.h), K = stiffness_matrix
+  std::vector<double> quadratic_stiffness; ///< Q, sorted i <= j <= k; empty: linear body
+  std::vector<double> cubic_stiffness;     ///< C, sorted i <= j <= k <= l
+  int n_modal_derivatives = 0;             ///< basis columns that are modal derivatives
+
+  bool nonlinear() const { return !quadratic_stiffness.empty(); }
   int n_nodes() const { return static_cast<int>(nodes.rows()); }
   int n_modes() const { return static_cast<int>(psi.cols()); }
 };

@@ -17,6 +17,12 @@ struct CompareSettings
   std::string load;     ///< force:GROUP:fx,fy[,fz]
   double duration = 0;  ///< s; 0: five periods of the first mode
   double time_step = 0; ///< s; 0: 1/40 of the first period
+  /// The full side geometrically nonlinear (total Lagrangian, the load a dead load), the
+  /// reduced side's static response its own equilibrium through the simulation's body
+  /// model (whatever the body file holds), not the linear K_red solve.
+  bool nonlinear = false;
+  std::string material_model = "svk"; ///< nonlinear: svk or neo-hooke
+  unsigned int load_increments = 10;  ///< nonlinear statics
 };
 
 struct CompareResult
@@ -33,5 +39,8 @@ struct CompareResult
 
 /// Static and transient (step load, Newmark average acceleration) response of the full FE
 /// model against the reduced body. The body must be clamped and made from this mesh.
+/// Nonlinear: the reduced static response is the rest state of the clamped reduced body
+/// under the load with every mode critically damped (dynamic relaxation), which for a
+/// linear body file equals K_red^-1 Psi^T f.
 CompareResult compare_with_full(const CompareSettings& settings);
 } // namespace chipflex::compare

@@ -8,8 +8,10 @@
 #include "fem/matrix_export.h"
 #include "fem/modal_reduction.h"
 #include "fem/reduce.h"
+#include "fem/svk_reduced_forces.h"
 
 #include <chrono>
+#include <stdexcept>
 
 namespace chipflex::fem
 {
@@ -41,7 +43,11 @@ ReducedBodyData reduce(const GmshMeshData& mesh, const ReductionSettings& settin
     export_matrices(body, settings.export_directory,
                     parse_matrix_export_format(settings.export_format, "--export-matrices-format"));
 
-  ModalReduction<dim> reduction(body, settings.n_modes, cases);
+  unsigned int derivative_modes = 0;
+  if (settings.nonlinear)
+    derivative_modes =
+        settings.derivative_modes ? settings.derivative_modes : std::min(settings.n_modes, 5u);
+  ModalReduction<dim> reduction(body, settings.n_modes, cases, derivative_modes);
   reduction.run(timings);
 
   t0 = clock::now();
@@ -77,6 +83,20 @@ ReducedBodyData reduce(const GmshMeshData& mesh, const ReductionSettings& settin
   for (int k = 0; k < data.psi.cols(); ++k)
     data.frequencies_hz[k] = std::sqrt(std::max(0., data.stiffness_matrix(k, k))) / (2 * M_PI);
   compute_inertia_invariants(body.scalar_mass_matrix, data);
+  if (settings.nonlinear)
+  {
+    const auto t1 = clock::now();
+    SvkPolynomial svk = svk_polynomial(body, data.psi);
+    // The polynomial's linear part comes from the same quadrature as K: it must be Psi^T K Psi.
+    const double scale = data.stiffness_matrix.cwiseAbs().maxCoeff();
+    if ((svk.linear - data.stiffness_matrix).cwiseAbs().maxCoeff() > 1e-8 * scale)
+      throw std::logic_error("reduce --nonlinear: the St Venant-Kirchhoff linear part differs "
+                             "from Psi^T K Psi");
+    data.quadratic_stiffness = std::move(svk.quadratic);
+    data.cubic_stiffness = std::move(svk.cubic);
+    data.n_modal_derivatives = reduction.n_derivatives;
+    timings.nonlinear = seconds_since(t1);
+  }
 
   if (!settings.vtu_file.empty())
   {

@@ -7,9 +7,11 @@
 #include "fem/direct_solver.h"
 #include "fem/elastic_body.h"
 #include "fem/gmsh_reader.h"
+#include "fem/nonlinear_elastic_body.h"
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 namespace chipflex::fem
@@ -38,10 +40,21 @@ FullResponse respond(const GmshMeshData& mesh, const ReducedBodyData& reduced,
   material.poisson_ratio = reduced.poisson_ratio;
   material.density = reduced.density;
   material.plane_stress = reduced.model == "plane_stress";
-  ElasticBody<dim> body(mesh, material, reduced.element_degree, reduced.clamp_set, MPI_COMM_WORLD);
   const auto t0 = clock::now();
-  body.setup_system();
-  body.assemble_system();
+  std::unique_ptr<NonlinearElasticBody<dim>> nonlinear;
+  std::unique_ptr<ElasticBody<dim>> linear;
+  if (settings.nonlinear)
+    nonlinear = std::make_unique<NonlinearElasticBody<dim>>(mesh, material, settings.material_model,
+                                                            reduced.element_degree,
+                                                            reduced.clamp_set, MPI_COMM_WORLD);
+  else
+  {
+    linear = std::make_unique<ElasticBody<dim>>(mesh, material, reduced.element_degree,
+                                                reduced.clamp_set, MPI_COMM_WORLD);
+    linear->setup_system();
+    linear->assemble_system();
+  }
+  const ElasticBody<dim>& body = nonlinear ? nonlinear->body() : *linear;
   if (static_cast<int>(body.n_nodes()) != reduced.n_nodes())
     throw InputError(settings.body_file, "has " + std::to_string(reduced.n_nodes()) +
                                              " nodes, the mesh gives " +
@@ -74,6 +87,26 @@ FullResponse respond(const GmshMeshData& mesh, const ReducedBodyData& reduced,
       c[d] = observe[d] * u;
     return c;
   };
+
+  if (nonlinear)
+  {
+    auto u = nonlinear->solve_static(force, settings.load_increments);
+    result.static_centroid = centroid(u);
+    // The step load from rest: the trapezoidal rule (generalised-alpha, rho = 1), as the
+    // linear Newmark rule below.
+    auto zero = body.new_vector();
+    zero = 0;
+    nonlinear->start_dynamics({}, zero, zero, force);
+    result.transient.resize(settings.n_steps + 1, dim);
+    result.transient.row(0) = centroid(zero).transpose();
+    for (int step = 1; step <= settings.n_steps; ++step)
+    {
+      nonlinear->step(settings.time_step, force);
+      result.transient.row(step) = centroid(nonlinear->displacement()).transpose();
+    }
+    result.seconds = seconds_since(t0);
+    return result;
+  }
 
   auto u = body.new_vector();
   {

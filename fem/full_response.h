@@ -2,10 +2,12 @@
 // The full FE model's response to one load case, the reference that `chipflex compare`
 // measures a reduced body against (compare/compare_with_full.h): the static solution and the
 // step-load transient (Newmark average acceleration, the matrix factorised once and reused
-// every step), both observed at the centroid of the loaded group's nodes. No deal.II in this
-// header; collective over MPI_COMM_WORLD like fem/reduce.h.
+// every step), both observed at the centroid of the loaded group's nodes; or, with
+// `nonlinear`, the same from the geometrically nonlinear model under the load as a dead load. No
+// deal.II in this header; collective over MPI_COMM_WORLD like fem/reduce.h.
 
 #include "common/reduced_body_file.h"
+#include "fem/hyperelastic_model.h"
 
 #include <Eigen/Dense>
 #include <string>
@@ -19,6 +21,12 @@ struct FullResponseSettings
   std::string load;      ///< force:GROUP:fx,fy[,fz]
   double time_step = 0;  ///< s, > 0
   int n_steps = 0;       ///< transient steps after t = 0
+  /// The geometrically nonlinear model (fem/nonlinear_elastic_body.h) instead of the
+  /// linear one: Newton statics in `load_increments` increments, and the step-load
+  /// transient by the trapezoidal rule with Newton on every step.
+  bool nonlinear = false;
+  HyperelasticModel material_model = HyperelasticModel::st_venant_kirchhoff;
+  unsigned int load_increments = 10;
 };
 
 struct FullResponse

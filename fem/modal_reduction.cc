@@ -4,6 +4,7 @@
 #include "common/wall_clock.h"
 #include "fem/direct_solver.h"
 #include "fem/eigen_solver.h"
+#include "fem/svk_reduced_forces.h"
 
 #include <Eigen/Eigenvalues>
 #include <chrono>
@@ -43,12 +44,20 @@ bool has_negative_sign(const Eigen::VectorXd& v)
 
 template <int dim>
 ModalReduction<dim>::ModalReduction(const ElasticBody<dim>& body_, unsigned int n_modes_,
-                                    std::vector<LoadCase> static_cases_)
-    : body(body_), n_modes(n_modes_), static_cases(std::move(static_cases_))
+                                    std::vector<LoadCase> static_cases_,
+                                    unsigned int n_derivative_modes_)
+    : body(body_), n_modes(n_modes_), static_cases(std::move(static_cases_)),
+      n_derivative_modes(n_derivative_modes_)
 {
   if (n_modes == 0 && static_cases.empty())
     throw InputError("--modes", "must be at least 1 (or give --static-modes)");
+  if (n_derivative_modes > n_modes)
+    throw InputError("--modal-derivatives", "uses the first N normal modes: at most --modes (" +
+                                                std::to_string(n_modes) + ")");
 }
+
+template <int dim>
+ModalReduction<dim>::~ModalReduction() = default;
 
 template <int dim>
 Eigen::VectorXd ModalReduction<dim>::apply_mass(const Eigen::VectorXd& v) const
@@ -67,6 +76,7 @@ void ModalReduction<dim>::run(ReductionTimings& timings)
   compute_normal_modes(timings);
   const auto t0 = std::chrono::steady_clock::now();
   compute_static_modes(timings);
+  compute_modal_derivatives();
   timings.static_modes = seconds_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
   orthonormalise_and_fix_signs();
@@ -186,50 +196,80 @@ void ModalReduction<dim>::compute_normal_modes(ReductionTimings& timings)
 }
 
 template <int dim>
+Eigen::VectorXd ModalReduction<dim>::solve_static(Eigen::VectorXd f)
+{
+  const auto layout = body.new_vector();
+  if (!static_solver)
+  {
+    // Free-free: solve (K + alpha M) u_{k+1} = f' + alpha M u_k, u made M-orthogonal to the
+    // rigid modes each time; the elastic error shrinks by alpha/(lambda_1 + alpha) per step.
+    static_shift = 0;
+    if (rigid.cols())
+      static_shift =
+          std::max(eigenvalues.empty() ? 0. : 1e-3 * eigenvalues.front(),
+                   1e-10 * diagonal_ratio(body.stiffness_matrix, body.mass_matrix, layout));
+    static_solver = std::make_unique<DirectSolver>(1, body.stiffness_matrix, static_shift,
+                                                   body.mass_matrix, body.node_block_size);
+  }
+  const double alpha = static_shift;
+  auto rhs = layout, u_vec = layout;
+  if (!rigid.cols())
+  {
+    body.from_nodal(f, rhs);
+    static_solver->solve(rhs, u_vec);
+    return body.to_nodal(u_vec);
+  }
+  f -= apply_mass(rigid * (rigid.transpose() * f)); // self-equilibrated (inertia relief)
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(f.size());
+  for (int iteration = 0; iteration < 50; ++iteration)
+  {
+    body.from_nodal(f + alpha * apply_mass(u), rhs);
+    static_solver->solve(rhs, u_vec);
+    Eigen::VectorXd next = body.to_nodal(u_vec);
+    next -= rigid * (rigid.transpose() * apply_mass(next));
+    const double change = (next - u).norm();
+    u = next;
+    if (change <= 1e-13 * u.norm())
+      break;
+  }
+  return u;
+}
+
+template <int dim>
 void ModalReduction<dim>::compute_static_modes(ReductionTimings&)
 {
   statics.clear();
-  if (static_cases.empty())
-    return;
-  const auto layout = body.new_vector();
-  // Free-free: solve (K + alpha M) u_{k+1} = f' + alpha M u_k, u made M-orthogonal to the
-  // rigid modes each time; the elastic error shrinks by alpha/(lambda_1 + alpha) per step.
-  double alpha = 0;
-  if (rigid.cols())
-    alpha = std::max(eigenvalues.empty() ? 0. : 1e-3 * eigenvalues.front(),
-                     1e-10 * diagonal_ratio(body.stiffness_matrix, body.mass_matrix, layout));
-  const DirectSolver solver(1, body.stiffness_matrix, alpha, body.mass_matrix,
-                            body.node_block_size);
   for (const auto& load : static_cases)
   {
     Eigen::VectorXd f = body.to_nodal(body.load_vector(load));
     if (f.norm() == 0)
       throw InputError("--static-modes " + load.text, "the load vanishes");
-    auto rhs = layout, u_vec = layout;
-    Eigen::VectorXd u;
-    if (!rigid.cols())
-    {
-      body.from_nodal(f, rhs);
-      solver.solve(rhs, u_vec);
-      u = body.to_nodal(u_vec);
-    }
-    else
-    {
-      f -= apply_mass(rigid * (rigid.transpose() * f)); // self-equilibrated (inertia relief)
-      u = Eigen::VectorXd::Zero(f.size());
-      for (int iteration = 0; iteration < 50; ++iteration)
-      {
-        body.from_nodal(f + alpha * apply_mass(u), rhs);
-        solver.solve(rhs, u_vec);
-        Eigen::VectorXd next = body.to_nodal(u_vec);
-        next -= rigid * (rigid.transpose() * apply_mass(next));
-        const double change = (next - u).norm();
-        u = next;
-        if (change <= 1e-13 * u.norm())
-          break;
-      }
-    }
-    statics.push_back(u);
+    statics.push_back(solve_static(f));
+  }
+}
+
+// d phi_i / d q_j = -K^-1 r_ij (fem/svk_reduced_forces.h); the sign is irrelevant (the
+// columns are normalised and sign-fixed later).
+template <int dim>
+void ModalReduction<dim>::compute_modal_derivatives()
+{
+  derivatives.clear();
+  derivative_kinds.clear();
+  if (n_derivative_modes == 0)
+    return;
+  Eigen::MatrixXd modes(body.dof_of_node.size(), n_derivative_modes);
+  for (unsigned int i = 0; i < n_derivative_modes; ++i)
+    modes.col(i) = normal[i];
+  std::vector<std::pair<int, int>> pairs;
+  for (unsigned int i = 0; i < n_derivative_modes; ++i)
+    for (unsigned int j = i; j < n_derivative_modes; ++j)
+      pairs.emplace_back(i, j);
+  const auto forces = svk_second_order_forces(body, modes, pairs);
+  for (std::size_t p = 0; p < pairs.size(); ++p)
+  {
+    derivatives.push_back(solve_static(-forces[p]));
+    derivative_kinds.push_back("derivative:" + std::to_string(pairs[p].first + 1) + "," +
+                               std::to_string(pairs[p].second + 1));
   }
 }
 
@@ -242,7 +282,7 @@ void ModalReduction<dim>::orthonormalise_and_fix_signs()
   // projection, m^2 of them, cost 45 s at 350k DoFs).
   std::vector<Eigen::VectorXd> columns, mass_columns;
   kinds.clear();
-  auto add = [&](Eigen::VectorXd v, const std::string& kind)
+  auto add = [&](Eigen::VectorXd v, const std::string& kind, bool may_drop = false)
   {
     Eigen::VectorXd mv = apply_mass(v);
     const double original = std::sqrt(v.dot(mv));
@@ -254,7 +294,12 @@ void ModalReduction<dim>::orthonormalise_and_fix_signs()
         mv -= a * mass_columns[j];
       }
     const double norm = std::sqrt(v.dot(mv));
-    if (!(norm > 1e-8 * original))
+    if (may_drop) // deflation: a modal derivative (nearly) in the span already
+    {
+      if (!(norm > 1e-3 * original))
+        return;
+    }
+    else if (!(norm > 1e-8 * original))
       throw InputError("--static-modes " + kind.substr(7),
                        "adds nothing to the modes before it (linearly dependent)");
     v /= norm;
@@ -272,6 +317,10 @@ void ModalReduction<dim>::orthonormalise_and_fix_signs()
     add(phi, "normal");
   for (std::size_t s = 0; s < statics.size(); ++s)
     add(statics[s], "static:" + static_cases[s].text);
+  const std::size_t before = columns.size();
+  for (std::size_t d = 0; d < derivatives.size(); ++d)
+    add(derivatives[d], derivative_kinds[d], true);
+  n_derivatives = static_cast<int>(columns.size() - before);
   basis.resize(body.dof_of_node.size(), columns.size());
   for (std::size_t k = 0; k < columns.size(); ++k)
     basis.col(k) = columns[k];
@@ -307,7 +356,8 @@ void ModalReduction<dim>::compute_reduced_stiffness()
 template <int dim>
 void ModalReduction<dim>::rotate_static_modes_to_ritz_vectors()
 {
-  const int n_static = statics.size(), n_normal = normal.size();
+  // the static and the modal-derivative columns together
+  const int n_static = statics.size() + n_derivatives, n_normal = normal.size();
   if (n_static < 2) // one static mode: its Rayleigh quotient is its Ritz value
     return;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ritz(

@@ -13,12 +13,20 @@
 //   4. with two or more static modes, the static columns rotated to the Ritz vectors of
 //      their block (K_ss y = w^2 y): K_red is diagonal, its diagonal the reduced model's
 //      frequencies squared, M_red still the identity.
+//   4'. with modal derivatives (nonlinear bodies, fem/svk_reduced_forces.h): the static
+//      derivatives d phi_i / d q_j of the first N normal modes, all pairs i <= j, are added
+//      after the static modes, Gram-Schmidt against everything before them; a derivative
+//      that adds less than 1e-3 of its own norm is dropped (deflation), and the Ritz
+//      rotation of step 4 covers the static and derivative columns together.
 //   5. sign convention: in each column the first row (node*dim + component) whose magnitude
 //      is within 1e-6 of the largest is positive, so every run, serial or `mpirun -np N`,
 //      writes the same modes.
 
+#include "fem/direct_solver.h"
 #include "fem/elastic_body.h"
 #include "fem/reduce.h"
+
+#include <memory>
 
 namespace chipflex::fem
 {
@@ -26,8 +34,10 @@ template <int dim>
 class ModalReduction
 {
 public:
+  /// @param n_derivative_modes modal derivatives of the first N normal modes (0: none)
   ModalReduction(const ElasticBody<dim>& body, unsigned int n_modes,
-                 std::vector<LoadCase> static_cases);
+                 std::vector<LoadCase> static_cases, unsigned int n_derivative_modes = 0);
+  ~ModalReduction();
 
   void run(ReductionTimings& timings);
 
@@ -35,11 +45,15 @@ public:
   std::vector<std::string> kinds;    ///< "normal" / "static:<case>"
   Eigen::MatrixXd reduced_stiffness; ///< basis^T K basis, diagonal
   std::vector<double> eigenvalues;   ///< of the normal modes, omega^2
+  int n_derivatives = 0;             ///< derivative columns kept (after deflation)
 
 private:
   void compute_rigid_modes();
   void compute_normal_modes(ReductionTimings& timings);
   void compute_static_modes(ReductionTimings& timings);
+  void compute_modal_derivatives();
+  /// K u = f (free-free: inertia relief, u M-orthogonal to rigid motion), f node-ordered.
+  Eigen::VectorXd solve_static(Eigen::VectorXd f);
   void orthonormalise_and_fix_signs();
   void compute_reduced_stiffness();
   void rotate_static_modes_to_ritz_vectors();
@@ -49,7 +63,11 @@ private:
   const ElasticBody<dim>& body;
   const unsigned int n_modes;
   const std::vector<LoadCase> static_cases;
+  const unsigned int n_derivative_modes;
+  std::unique_ptr<DirectSolver> static_solver;
+  double static_shift = 0;
   Eigen::MatrixXd rigid; ///< M-orthonormal rigid-body modes (free-free only)
-  std::vector<Eigen::VectorXd> normal, statics;
+  std::vector<Eigen::VectorXd> normal, statics, derivatives;
+  std::vector<std::string> derivative_kinds;
 };
 } // namespace chipflex::fem

@@ -23,15 +23,20 @@ struct ReductionSettings
   std::string clamp_group;               ///< empty: free-free body
   unsigned int n_modes = 10;             ///< elastic normal modes (rigid modes never counted)
   std::vector<std::string> static_modes; ///< load cases, e.g. "pressure:skin", "force:tip:0,-1"
-  std::string vtu_file;                  ///< mode shapes for ParaView; empty: none
-  std::string export_directory;          ///< M and K (docs/export_matrices.md); empty: none
-  std::string export_format = "mtx";     ///< mtx: M.mtx, K.mtx, dof_nodes.csv; hdf5: matrices.h5
+  /// Geometrically nonlinear body (St Venant-Kirchhoff): the basis gains the static modal
+  /// derivatives of the first `derivative_modes` normal modes (all pairs), and the file the
+  /// reduced internal force as a cubic polynomial (fem/svk_reduced_forces.h).
+  bool nonlinear = false;
+  unsigned int derivative_modes = 0; ///< 0 with nonlinear: min(n_modes, 5)
+  std::string vtu_file;              ///< mode shapes for ParaView; empty: none
+  std::string export_directory;      ///< M and K (docs/export_matrices.md); empty: none
+  std::string export_format = "mtx"; ///< mtx: M.mtx, K.mtx, dof_nodes.csv; hdf5: matrices.h5
 };
 
 struct ReductionTimings
 {
   double mesh_reading = 0, setup = 0, assembly = 0, factorisation = 0, eigen_solve = 0,
-         static_modes = 0, basis = 0, post_processing = 0;
+         static_modes = 0, basis = 0, post_processing = 0, nonlinear = 0;
   std::size_t n_dofs = 0, n_cells = 0;
 };
 

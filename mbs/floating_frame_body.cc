@@ -89,6 +89,12 @@ FloatingFrameBody<dim>::FloatingFrameBody(const ReducedBodyData& data,
   }
   m_red_ = data.mass_matrix.topLeftCorner(m, m);
   k_red_ = data.stiffness_matrix.topLeftCorner(m, m);
+  if (data.nonlinear())
+  {
+    nonlinear_ = true;
+    svk_ = PolynomialStiffness(data.stiffness_matrix, data.quadratic_stiffness,
+                               data.cubic_stiffness, m);
+  }
   switch (options.damping)
   {
   case DampingKind::none:
@@ -126,6 +132,28 @@ FloatingFrameBody<dim>::FloatingFrameBody(const ReducedBodyData& data,
   tmp_dd_.resize(d2);
   skin_u_.resize(dim * ns);
   skin_w_.resize(dim * ns);
+  elastic_.resize(m);
+}
+
+template <int dim>
+void FloatingFrameBody<dim>::set_clamp_rotation(const Omega& omega, const Omega& alpha)
+{
+  if (!clamped_)
+    throw InputError("FloatingFrameBody::set_clamp_rotation", "the body is not clamped to ground");
+  clamp_rotating_ = true;
+  clamp_omega_ = omega;
+  clamp_alpha_ = alpha;
+}
+
+template <int dim>
+Eigen::VectorXd FloatingFrameBody<dim>::elastic_force() const
+{
+  Eigen::VectorXd f(n_modes_);
+  if (nonlinear_)
+    svk_.evaluate(q_, f);
+  else
+    f.noalias() = k_red_ * q_;
+  return f;
 }
 
 template <int dim>
@@ -207,12 +235,11 @@ typename FloatingFrameBody<dim>::Vector FloatingFrameBody<dim>::node_velocity(in
 {
   const Vector u = x_ref_.row(node).transpose() + psi_.middleRows(dim * node, dim) * q_;
   Vector w = psi_.middleRows(dim * node, dim) * v_.tail(n_modes_);
-  if (clamped_)
-    return rotation_ * w;
+  const Omega omega = clamped_ ? clamp_omega_ : Omega(v_.template segment<rdim>(dim));
   if constexpr (dim == 2)
-    w += v_(2) * perp(u);
+    w += omega(0) * perp(u);
   else
-    w += Eigen::Vector3d(v_.template segment<3>(3)).cross(u);
+    w += Eigen::Vector3d(omega).cross(u);
   return frame_velocity() + rotation_ * w;
 }
 
@@ -297,7 +324,7 @@ void FloatingFrameBody<dim>::skin_velocities(std::vector<Vector>& v) const
   v.resize(skin_nodes_.size());
   tmp_m_ = v_.tail(n_modes_);
   skin_w_.noalias() = skin_psi_ * tmp_m_;
-  if (clamped_)
+  if (clamped_ && !clamp_rotating_)
   {
     for (std::size_t s = 0; s < v.size(); ++s)
       v[s] = rotation_ * skin_w_.template segment<dim>(dim * s);
@@ -305,15 +332,16 @@ void FloatingFrameBody<dim>::skin_velocities(std::vector<Vector>& v) const
   }
   skin_u_.noalias() = skin_psi_ * q_;
   skin_u_ += skin_ref_;
-  const Vector r_dot = v_.template head<dim>();
+  const Vector r_dot = frame_velocity();
+  const Omega omega = clamped_ ? clamp_omega_ : Omega(v_.template segment<rdim>(dim));
   for (std::size_t s = 0; s < v.size(); ++s)
   {
     const Vector u = skin_u_.template segment<dim>(dim * s);
     Vector w = skin_w_.template segment<dim>(dim * s);
     if constexpr (dim == 2)
-      w += v_(2) * perp(u);
+      w += omega(0) * perp(u);
     else
-      w += Eigen::Vector3d(v_.template segment<3>(3)).cross(u);
+      w += Eigen::Vector3d(omega).cross(u);
     v[s] = r_dot + rotation_ * w;
   }
 }

@@ -11,9 +11,13 @@
 // formulation with modal reduction", Acta Mech 232. Every term of the mass matrix and of
 // the quadratic velocity vector is a linear function of the entries of
 //     C(a, b) = sum_ij Ms_ij a_i b_j^T      (common/reduced_body_file.h),
-// derived in floating_frame_body.cc. The body is linear in q (small elastic
-// deformation): there is no geometric stiffening (no Wallrapp SID first-order terms), so a
-// fast-spinning flexible body softens unphysically; see docs/mbs.md.
+// derived in floating_frame_body.cc. The kinematics is linear in q, so these terms are
+// exact for any q. Elastic forces: a linear body (format v1, or v2 without /nonlinear) has
+// K_red q and no geometric stiffening, so a fast-spinning flexible body softens
+// unphysically; a nonlinear body (`chipflex reduce --nonlinear`) has the reduced St
+// Venant-Kirchhoff force f(q) = K q + Q:(q q) + C:(q q q) and its tangent
+// (common/polynomial_stiffness.h), which couples bending and axial coordinates and gives
+// the geometric stiffening under centrifugal load; see docs/mbs.md.
 //
 // Reference conditions: with a clamp set in the file the modes vanish on the clamp, so
 // the frame *is* the clamp (clamp it to ground with clamp_to_ground(), or attach it to
@@ -23,6 +27,7 @@
 // A rigid body is the same class with zero modes (rigid_body.h), so joints, springs and
 // the integrator see one body kind.
 
+#include "common/polynomial_stiffness.h"
 #include "common/reduced_body_file.h"
 #include "mbs/rotation.h"
 #include "mbs/skin_body.h"
@@ -75,6 +80,15 @@ public:
   /// equations reduce to M_red q'' + D q' + K_red q = Psi^T A^T f (constant matrices).
   void clamp_to_ground();
   bool clamped_to_ground() const { return clamped_; }
+  /// A ground-clamped body whose clamp turns about the frame origin with the prescribed
+  /// body-frame angular velocity and acceleration (e.g. a beam on a driven hub, a chip in a
+  /// spinning drill): the modal equations gain the inertia loads of the frame motion
+  /// (centrifugal, Coriolis, Euler; the same terms as for a floating frame). Set them for
+  /// the end of the coming step (generalised-alpha balances at t_n+1), together with the
+  /// pose (set_pose) when world loads or positions matter.
+  void set_clamp_rotation(const Omega& omega, const Omega& alpha);
+  /// True for a body file with the nonlinear (St Venant-Kirchhoff) coefficients.
+  bool nonlinear() const { return nonlinear_; }
 
   const Vector& position() const { return position_; }
   const Matrix& rotation() const { return rotation_; }
@@ -132,7 +146,7 @@ public:
   /// for a ground-clamped body; the elastic part only for a floating one).
   void add_tangent(double c_k, double c_d, Eigen::Ref<Eigen::MatrixXd> s) const;
   /// True when mass matrix and tangent are constant and forces() is linear.
-  bool linear() const { return clamped_; }
+  bool linear() const { return clamped_ && !nonlinear_ && !clamp_rotating_; }
 
   /// Frame-fixed point p (frame coordinates): world position and d x / d v (dim x nv).
   Vector point_position(const Vector& p) const { return position_ + rotation_ * p; }
@@ -147,7 +161,10 @@ public:
   Vector linear_momentum() const;
   Omega angular_momentum() const;
   double kinetic_energy() const;
-  double strain_energy() const { return 0.5 * q_.dot(k_red_ * q_); }
+  /// 1/2 q K q (linear), the St Venant-Kirchhoff energy of Psi q (nonlinear).
+  double strain_energy() const { return nonlinear_ ? svk_.energy(q_) : 0.5 * q_.dot(k_red_ * q_); }
+  /// The elastic force on the modal coordinates, K_red q or f(q).
+  Eigen::VectorXd elastic_force() const;
 
 private:
   void update_deformation_terms() const;
@@ -173,9 +190,13 @@ private:
   Eigen::MatrixXd c_pp_;   ///< dim^2 m x m, block row k, column l = vec C(psi_l, psi_k)
   Eigen::MatrixXd gyro_;   ///< rdim m x m, block row k, column l = axial C(psi_l, psi_k)
   Eigen::MatrixXd m_red_, k_red_, d_red_;
+  bool nonlinear_ = false;
+  PolynomialStiffness svk_;
 
   // state
   bool clamped_ = false;
+  bool clamp_rotating_ = false;
+  Omega clamp_omega_ = Omega::Zero(), clamp_alpha_ = Omega::Zero();
   Vector position_ = Vector::Zero();
   double angle_ = 0;
   Eigen::Quaterniond quaternion_ = Eigen::Quaterniond::Identity();
@@ -200,6 +221,7 @@ private:
   mutable Vector s_;               ///< sum_ij Ms_ij u_j
   mutable Matrix c_uu_;
   mutable bool deformation_terms_valid_ = false; ///< false whenever q changes
-  mutable Eigen::VectorXd tmp_m_, tmp_rm_, tmp_dd_, skin_u_, skin_w_;
+  mutable Eigen::VectorXd tmp_m_, tmp_rm_, tmp_dd_, skin_u_, skin_w_, elastic_;
+  mutable Eigen::MatrixXd tangent_;
 };
 } // namespace chipflex::mbs

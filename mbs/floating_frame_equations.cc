@@ -30,6 +30,11 @@
 //   Q_R = sum_i f_i,  Q_th = sum_i u_i x A^T f_i = axial((X_f + sum_k q_k G_k) A),
 //   Q_q,k = sum_i psi_k,i . A^T f_i = tr(A G_k)
 // gravity g: Q_R = m g, Q_th = s x A^T g, Q_q = T^T A^T g.
+// Elastic force: K_red q, or for a nonlinear body the reduced St Venant-Kirchhoff force
+// f(q) (common/polynomial_stiffness.h); the kinematics x = R + A (xbar + Psi q) is the same,
+// so none of the inertia terms above changes.
+// A ground-clamped body on a prescribed rotation (set_clamp_rotation) keeps the q rows
+// with omega and alpha given: Q_q - h_q(omega, q, q') - M_thq^T alpha.
 
 namespace chipflex::mbs
 {
@@ -111,14 +116,47 @@ void FloatingFrameBody<dim>::forces(const Vector& gravity, Eigen::Ref<Eigen::Vec
   auto fq = out.tail(m);
   fq.noalias() = node_force_gf_.transpose() * vec_at;
   fq.noalias() += t_.transpose() * g_body;
-  fq.noalias() -= k_red_ * q_;
+  if (nonlinear_)
+  {
+    svk_.evaluate(q_, elastic_);
+    fq -= elastic_;
+  }
+  else
+    fq.noalias() -= k_red_ * q_;
   fq.noalias() -= d_red_ * qd;
   fq += modal_force_;
-  if (clamped_)
+  if (clamped_ && !clamp_rotating_)
     return;
 
   update_deformation_terms();
   const Eigen::Map<const Eigen::MatrixXd> cu(c_upsi_.data(), d2, m);
+  if (clamped_) // prescribed rotation of the clamp: its inertia loads on the modes
+  {
+    tmp_rm_.noalias() = gyro_ * qd;
+    const Eigen::Map<const Eigen::Matrix<double, rdim, Eigen::Dynamic>> gyro_q(tmp_rm_.data(), rdim,
+                                                                               m);
+    for (int k = 0; k < m; ++k)
+    {
+      const Eigen::Matrix<double, rdim, 1> ax(
+          axial(Mat<dim>(as_matrix<dim>(c_upsi_.data() + d2 * k))));
+      fq(k) -= ax.dot(clamp_alpha_);
+    }
+    if constexpr (dim == 2)
+    {
+      const double w = clamp_omega_(0);
+      fq += w * w * (cu.row(0) + cu.row(3)).transpose();
+      fq.noalias() -= 2 * w * gyro_q.transpose();
+    }
+    else
+    {
+      const Eigen::Vector3d w = clamp_omega_;
+      const Matrix ww = w * w.transpose() - w.squaredNorm() * Matrix::Identity();
+      const Eigen::Map<const Eigen::Matrix<double, d2, 1>> vec_ww(ww.data());
+      fq.noalias() -= cu.transpose() * vec_ww;
+      fq.noalias() -= 2 * gyro_q.transpose() * w;
+    }
+    return;
+  }
   const Vector tqd = t_ * qd;
   Eigen::Matrix<double, d2, 1> vec_cup = cu * qd;
   const Matrix c_up = as_matrix<dim>(vec_cup.data());
@@ -176,7 +214,13 @@ void FloatingFrameBody<dim>::add_tangent(double c_k, double c_d,
                                          Eigen::Ref<Eigen::MatrixXd> s) const
 {
   const int m = n_modes_;
-  s.bottomRightCorner(m, m) += c_k * k_red_ + c_d * d_red_;
+  if (nonlinear_)
+  {
+    svk_.evaluate(q_, elastic_, &tangent_);
+    s.bottomRightCorner(m, m) += c_k * tangent_ + c_d * d_red_;
+  }
+  else
+    s.bottomRightCorner(m, m) += c_k * k_red_ + c_d * d_red_;
 }
 
 template void FloatingFrameBody<2>::update_deformation_terms() const;

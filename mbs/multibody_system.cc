@@ -293,6 +293,10 @@ void MultibodySystem<dim>::step_generalized_alpha(double h)
     // round-off floor: a correction that no longer shrinks, already tiny, is converged
     if (correction <= 1e-8 * scale && correction >= 0.5 * last_correction)
       break;
+    // a matrix that does not contract (strongly nonlinear elastic forces within the step,
+    // e.g. a St Venant-Kirchhoff body far from equilibrium) is renewed at this iterate
+    if (it > 0 && correction > 0.5 * last_correction)
+      refactor = true;
     last_correction = correction;
   }
   update_kinematics();

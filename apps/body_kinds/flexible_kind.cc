@@ -1,12 +1,11 @@
 // Body kind `flexible`: a reduced floating-frame body from a body file (`chipflex
-// reduce`), 2D or 3D, free or with its frame clamped to the ground. Optionally (2D,
-// clamped beam-like bodies) a large-rotation skin that rebuilds the beam inextensibly
-// from its rotation field (coupling/large_rotation_beam_skin.h).
+// reduce`), 2D or 3D, free or with its frame clamped to the ground, linear or
+// geometrically nonlinear (`reduce --nonlinear`, docs/nonlinear_bodies.md); its skin
+// moves by Psi q.
 
 #include "apps/body_kinds/body_kind.h"
 #include "common/input_error.h"
 #include "common/reduced_body_file.h"
-#include "coupling/large_rotation_beam_skin.h"
 #include "coupling/multibody_coupled_body.h"
 
 namespace chipflex::apps
@@ -28,10 +27,6 @@ public:
     keys.declare("rayleigh stiffness", "0", "double >= 0", "Rayleigh beta, s.");
     keys.declare("probe set", "tip", "text",
                  "Node set whose mean is the body's probe point (displacement output).");
-    keys.declare("clamp set", "clamp", "text", "Large rotation: the node set at the clamped end.");
-    keys.declare("large rotation", "false", "bool",
-                 "2D clamped beam: rebuild the skin inextensibly from the linear rotation "
-                 "field, so that large deflections foreshorten the beam.");
   }
 
   template <int dim>
@@ -77,22 +72,6 @@ public:
     place_body(*body, context.placement);
     auto* skin = body.get();
     system->add_body(std::move(body));
-    if (keys.flag("large rotation"))
-    {
-      if constexpr (dim == 2)
-      {
-        if (!context.placement.clamped)
-          throw InputError(keys.at("large rotation"), "needs a clamped body");
-        auto beam = std::make_unique<coupling::LargeRotationBeamSkin>(*skin, keys.text("clamp set"),
-                                                                      probe_set);
-        const coupling::LargeRotationBeamSkin* probe_skin = beam.get();
-        return std::make_unique<coupling::MultibodyCoupledBody<2>>(
-            "flexible", std::move(system), std::move(beam), context.max_step,
-            [probe_skin](const mbs::MultibodySystem<2>&) { return probe_skin->tip_position(); });
-      }
-      else
-        throw InputError(keys.at("large rotation"), "exists for 2D beams only");
-    }
     return std::make_unique<coupling::MultibodyCoupledBody<dim>>(
         "flexible", std::move(system), *skin, context.max_step,
         [probe](const mbs::MultibodySystem<dim>& s)

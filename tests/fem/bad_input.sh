@@ -44,6 +44,10 @@ expect "E = 0" "--E" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --E 0
 expect "rho < 0" "--rho" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --rho -1
 expect "modes = 0" "--modes" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --modes 0
 expect "degree 3" "--degree" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --degree 3
+expect "derivatives without --nonlinear" "--modal-derivatives" "$out" \
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" --modal-derivatives 2
+expect "more derivatives than modes" "--modal-derivatives" "$out" \
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" --modes 2 --nonlinear --modal-derivatives 3
 expect "bad mesh size" "--size" "$dir/m.msh" "$chipflex" mesh gate -o "$dir/m.msh" --size -1
 expect "unknown mesh kind" "sphere" "$dir/m.msh" "$chipflex" mesh sphere -o "$dir/m.msh"
 
