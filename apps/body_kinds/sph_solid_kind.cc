@@ -34,6 +34,13 @@ public:
     keys.declare("clamp columns", "8", "integer >= 2", "Fixed particles per row.");
     keys.declare("smoothing factor", "1.3", "double >= 0", "h / spacing, -.");
     keys.declare("direction", "0, -1", "text", "Unit vector from the clamped to the free end.");
+    keys.declare("formulation", "total lagrangian", "total lagrangian|updated lagrangian",
+                 "total lagrangian: St Venant-Kirchhoff on reference neighbours (Bonet & Lok "
+                 "1999); updated lagrangian: the seed's Gray et al. 2001 solid (docs/sph.md).");
+    keys.declare("kernel gradient correction", "true", "bool",
+                 "Bonet & Lok (1999) corrected kernel gradients (docs/sph.md).");
+    keys.declare("hourglass control", "10", "double >= 0",
+                 "Total Lagrangian: Ganzenmueller (2015) hourglass coefficient alpha, -; 0: off.");
   }
 
   std::unique_ptr<coupling::CoupledBody<2>> build(const BodyKeys& keys,
@@ -48,6 +55,11 @@ public:
                        "must lie in (-1, 0.5), got " + keys.text("poisson ratio"));
     material.artificial_stress = keys.number("artificial stress");
     material.viscosity_alpha = keys.number("solid viscosity");
+    material.kernel_gradient_correction = keys.flag("kernel gradient correction");
+    material.hourglass_control = keys.number("hourglass control");
+    material.formulation = keys.text("formulation") == "updated lagrangian"
+                               ? sph::SolidFormulation::updated_lagrangian
+                               : sph::SolidFormulation::total_lagrangian;
     sph::SolidStripLayout layout;
     layout.clamped_end_centre = context.placement.position;
     layout.direction = keys.vector<2>("direction");
