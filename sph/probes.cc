@@ -82,7 +82,9 @@ double sample_flow_rate(const FluidSolver<2>& fluid, const Eigen::Vector2d& a,
   if (!(length > 0))
     return 0;
   const Eigen::Vector2d t = (b - a) / length, n(t.y(), -t.x());
-  const double half = fluid.parameters().smoothing_length(); // slab 2h wide
+  // A slab two particle spacings wide: a lattice aligned with the section has exactly two
+  // of its columns inside, whatever its offset, so a uniform stream gives U L exactly.
+  const double half = fluid.parameters().particle_spacing;
   const auto& p = fluid.particles();
   double flux = 0;
   for (std::size_t i = p.n_boundary; i < p.size(); ++i)

@@ -3,8 +3,8 @@
 // interpolation sum p_j V_j W / sum V_j W over fluid neighbours (0 where dry); the water
 // height on a vertical line is the highest point where the fluid's kernel fraction
 // sum V_j W reaches 1/2, sampled every dp/4. The flow rate through a 2D section is the
-// volume flux of the fluid in a slab one kernel support (2h) wide around it,
-// Q = (1 / 2h) sum_j V_j v_j . n over the particles in the slab (the slab average of
+// volume flux of the fluid in a slab two particle spacings wide around it,
+// Q = (1 / 2 dp) sum_j V_j v_j . n over the particles in the slab (the slab average of
 // v . n times the section's length).
 
 #include "sph/fluid_solver.h"

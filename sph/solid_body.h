@@ -1,7 +1,9 @@
 #pragma once
-// An elastic solid made of SPH particles: Gray, Monaghan & Swift 2001, "SPH elastic
-// dynamics", Comput. Methods Appl. Mech. Engrg. 190, 6641-6662 — the seed paper's
-// first gate model (Table 1 in docs/elastic_gate.md). Updated Lagrangian: density by continuity,
+// An elastic solid made of SPH particles, in one of two formulations (SolidFormulation):
+// total Lagrangian St Venant-Kirchhoff (the default, below), or Gray, Monaghan & Swift
+// 2001, "SPH elastic dynamics", Comput. Methods Appl. Mech. Engrg. 190, 6641-6662 — the
+// seed paper's first gate model (Table 1 in docs/elastic_gate.md). That one is updated
+// Lagrangian: density by continuity,
 // pressure from the bulk modulus, deviatoric stress by the Jaumann rate of Hooke's law,
 // momentum with Monaghan's artificial viscosity and the artificial stress that removes
 // the tensile instability (their eq. 27-30: R = -eps sigma'/rho^2 on positive principal

@@ -11,6 +11,7 @@
 #              carry modifiers, each ':NAME': ':noweight' / ':weight' (the gate's own weight
 #              off / on), ':gap' (the gate lifted GAP_MM off the floor, the wall above with
 #              it), ':dummy' / ':lj' (the gate's wall model: dummy particles / Lennard-Jones),
+#              ':ljthin' (the gate's Lennard-Jones wall with half its reach: r0 = dp/4, R = dp/2),
 #              ':uncorrected' (sph solid: the seed's GMS-2001 solid); its run folder is the
 #              name with '_' for ':'.
 #   Environment: CHIPFLEX (default build/bin/chipflex), THREADS (default: all cores),
@@ -68,6 +69,8 @@ for spec in $variants; do
         wm=$([ "$m" = dummy ] && echo "dummy particles" || echo "lennard jones")
         sed -i -e '/^    set wall model *=/d' \
             -e "s|^\(    set name *= gate\)\$|\1\n    set wall model = $wm|" "$run.prm" ;;
+      ljthin)
+        sed -i -e "s|^\(    set name *= gate\)\$|\1\n    set lennard jones r0 = $(awk "BEGIN { print $dp / 4 }")\n    set lennard jones R = $(awk "BEGIN { print $dp / 2 }")|" "$run.prm" ;;
       uncorrected)
         sed -i -e "s|^\(    set name *= gate\)\$|\1\n    set formulation = updated lagrangian\n    set kernel gradient correction = false|" "$run.prm" ;;
       *) echo "unknown modifier :$m in $spec" >&2; exit 2 ;;
