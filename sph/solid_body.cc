@@ -189,7 +189,7 @@ void SolidBody<dim>::compute_accelerations()
 
   // Momentum. The pair force m_i m_j (T_i C_i + T_j C_j) grad_i W_ij is antisymmetric in
   // (i, j) (grad_j W_ji = -grad_i W_ij), so the internal forces cancel in pairs with the
-  // correction too (Bonet & Lok 1999, eq. 40).
+  // correction too (Bonet & Lok 1999).
   const double c = material_.wave_speed();
 #pragma omp parallel for schedule(static) if (n > parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)

@@ -32,7 +32,7 @@ enum class SolidFormulation
   /// continuity, Jaumann rate of Hooke's law, artificial stress against the tensile
   /// instability, neighbours in the current configuration.
   updated_lagrangian,
-  /// Total Lagrangian (Bonet & Lok 1999, sec. 5; the form SPHinXsys uses for its solids):
+  /// Total Lagrangian (Bonet & Lok 1999; the form SPHinXsys uses for its solids):
   /// neighbours and kernel gradients of the reference configuration, the deformation
   /// gradient F_i = I + sum_j V_j (u_j - u_i) (C_i grad_0 W_ij)^T, St Venant-Kirchhoff
   /// stress S = lambda tr(E) I + 2 mu E, E = (F^T F - I) / 2, and the forces that are the

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The elastic gate's flow account: per run folder of run_benchmark.sh, at the
 experiment's frames, the free end's dx (mm; the experiment's beside it), the upstream water
-level h_upstream (mm, mid-column), the discharge under the gate q_under_gate (litres per
+level h_upstream (mm, mid-column), the flow towards the gate q_under_gate through
+x = 0.095 m (the discharge under the gate plus what the moving gate sweeps; litres per
 second per metre, mean over +-5 ms), and the volume that has passed the section, integral
 of q dt, against the volume the tank has lost, 0.1 m * (h0 - h_upstream) (litres per
 metre; equal for a level surface).
