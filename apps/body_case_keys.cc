@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <deal.II/base/parameter_handler.h>
+#include <limits>
 #include <map>
 #include <regex>
 
@@ -64,6 +65,12 @@ void declare_common(ParameterHandler& prm)
   prm.declare_entry("rho infinity", "0.9", Double(0, 1), "Generalised-alpha spectral radius, -.");
   prm.declare_entry("max step", "0", Double(0),
                     "Body sub-step limit within a fluid step, s; 0: one step per fluid step.");
+  prm.declare_entry("weight", "true", Bool(),
+                    "Whether gravity (the fluid's) acts on the body; false: a weightless body "
+                    "(the fluid still loads it).");
+  prm.declare_entry("probe point", "", Anything(),
+                    "m (2 or 3 numbers): the probe (displacement output, RMS) is the skin node "
+                    "nearest to this point at the start; empty: the kind's probe point.");
 }
 
 KindKeys declare_kinds(ParameterHandler& prm)
@@ -172,6 +179,8 @@ BodyCase<dim> read_body_case(ParameterHandler& prm, const std::string& case_path
     context.where = where;
     context.case_path = case_path;
     context.gravity = fluid.fluid.gravity;
+    if (!keys.flag("weight"))
+      context.gravity.setZero();
     context.particle_spacing = fluid.fluid.particle_spacing;
     auto& p = context.placement;
     p.position = keys.vector<dim>("position");
@@ -222,6 +231,20 @@ BodyCase<dim> read_body_case(ParameterHandler& prm, const std::string& case_path
       if (std::string(e.what()).rfind(case_path, 0) == 0)
         throw;
       throw InputError(where, e.what());
+    }
+    if (prm.get("probe point").find_first_not_of(" \t") != std::string::npos)
+    {
+      using Vector = Eigen::Matrix<double, dim, 1>;
+      const Vector point = keys.vector<dim>("probe point");
+      std::vector<Vector> x;
+      body.body->skin().skin_positions(x);
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < x.size(); ++k)
+        if ((x[k] - point).norm() < best)
+        {
+          best = (x[k] - point).norm();
+          body.probe_node = static_cast<int>(k);
+        }
     }
     c.bodies.push_back(std::move(body));
     prm.leave_subsection();

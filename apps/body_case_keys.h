@@ -30,6 +30,17 @@ struct CaseBody
   sph::WallModel wall_model = sph::WallModel::lennard_jones;
   sph::LennardJonesParameters lennard_jones; ///< zeros: derived from the fluid
   std::size_t displaced_fluid = 0;           ///< fluid particles removed from inside it
+  int probe_node = -1; ///< skin node that is the probe (`probe point`); -1: the kind's own
+
+  /// The probe point now: the chosen skin node, or the kind's probe point.
+  Eigen::Matrix<double, dim, 1> probe_position() const
+  {
+    if (probe_node < 0)
+      return body->probe_position();
+    std::vector<Eigen::Matrix<double, dim, 1>> x;
+    body->skin().skin_positions(x);
+    return x[probe_node];
+  }
 };
 
 /// What the case says about the coupled run.

@@ -188,6 +188,11 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
   prm.declare_entry("water height", "", Anything(),
                     "Water-height gauges 'name: x, y[, z]' (m; the vertical coordinate is "
                     "ignored), separated by ';' -> h_<name>_m (surface elevation).");
+  prm.declare_entry("flow rate", "", Anything(),
+                    "2D flow-rate gauges 'name: x0, y0, x1, y1' (m, the section from "
+                    "(x0, y0) to (x1, y1)), separated by ';' -> q_<name>_m2_s (volume flow, "
+                    "m^2/s per metre of depth, positive to the right of the section's "
+                    "direction).");
   prm.leave_subsection();
   declare_body_keys(prm, n_bodies);
   declare_contact_keys(prm);
@@ -256,6 +261,31 @@ std::vector<sph::Probe<dim>> probes_of(const std::string& key, const std::string
     if (name.find_first_of(" ,\"") != std::string::npos)
       throw InputError(key, "probe name '" + name + "' must not contain spaces, commas or quotes");
     out.push_back({name, vector_of<dim>(key, item.substr(colon + 1))});
+  }
+  return out;
+}
+
+template <int dim>
+std::vector<sph::FlowSection> sections_of(const std::string& key, const std::string& text)
+{
+  std::vector<sph::FlowSection> out;
+  for (const auto& item : split(text, ';'))
+  {
+    if (dim != 2)
+      throw InputError(key, "flow-rate gauges are 2D only");
+    const auto colon = item.find(':');
+    if (colon == std::string::npos || trim(item.substr(0, colon)).empty())
+      throw InputError(key, "'" + item + "' is not 'name: x0, y0, x1, y1'");
+    const std::string name = trim(item.substr(0, colon));
+    if (name.find_first_of(" ,\"") != std::string::npos)
+      throw InputError(key, "gauge name '" + name + "' must not contain spaces, commas or quotes");
+    const auto v = numbers(key, item.substr(colon + 1));
+    if (v.size() != 4)
+      throw InputError(key, "'" + item + "' needs 4 numbers: x0, y0, x1, y1");
+    const Eigen::Vector2d a(v[0], v[1]), b(v[2], v[3]);
+    if (!((b - a).norm() > 0))
+      throw InputError(key, "'" + item + "': the section has zero length");
+    out.push_back({name, a, b});
   }
   return out;
 }
@@ -492,6 +522,7 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
   prm.enter_subsection("probes");
   c.pressure_probes = probes_of<dim>("probes/pressure", prm.get("pressure"));
   c.height_probes = probes_of<dim>("probes/water height", prm.get("water height"));
+  c.flow_sections = sections_of<dim>("probes/flow rate", prm.get("flow rate"));
   prm.leave_subsection();
 }
 

@@ -63,7 +63,7 @@ CoupledSimulation<dim>::CoupledSimulation(const sph::CaseDescription<dim>& fluid
   {
     cosim_->add_body(*b.body, b.name, b.wall_model, b.lennard_jones);
     fluid_.exclude_from_wall_output(cosim_->fluid_wall_id(cosim_->n_bodies() - 1));
-    probe_start_.push_back(b.body->probe_position());
+    probe_start_.push_back(b.probe_position());
     reference_skins_.emplace_back();
     b.body->skin().skin_positions(reference_skins_.back());
     histories_.emplace_back();
@@ -82,7 +82,7 @@ void CoupledSimulation<dim>::record()
     auto& h = histories_[b];
     if (!h.empty() && t - h.back()[0] < sample_interval * (1 - 1e-9))
       continue;
-    const Vector u = case_.bodies[b].body->probe_position() - probe_start_[b];
+    const Vector u = case_.bodies[b].probe_position() - probe_start_[b];
     Sample s;
     s[0] = t;
     for (int d = 0; d < dim; ++d)
@@ -153,7 +153,7 @@ std::vector<double> CoupledSimulation<dim>::probe_values() const
   for (std::size_t b = 0; b < case_.bodies.size(); ++b)
   {
     const auto& body = *case_.bodies[b].body;
-    const Vector x = body.probe_position();
+    const Vector x = case_.bodies[b].probe_position();
     const Vector u = x - probe_start_[b];
     values.insert(values.end(), u.data(), u.data() + dim);
     values.insert(values.end(), x.data(), x.data() + dim);

@@ -1,5 +1,5 @@
 #pragma once
-// An SPH solid (sph::SolidBody, Gray, Monaghan & Swift 2001) as a coupled body: its
+// An SPH solid (sph::SolidBody) as a coupled body: its
 // skin nodes are fixed linear combinations of particle positions (sph/solid_strip.h),
 // so their velocities use the same weights and skin forces are spread back to the
 // particles with them — the transpose map that conserves momentum and power. The solid

@@ -41,6 +41,14 @@ struct Probe
   Eigen::Matrix<double, dim, 1> position;
 };
 
+/// A 2D flow-rate gauge: the section from a to b; flow counts positive to the right of
+/// a -> b (along (dy, -dx)).
+struct FlowSection
+{
+  std::string name;
+  Eigen::Vector2d a, b;
+};
+
 template <int dim>
 struct CaseDescription
 {
@@ -64,6 +72,7 @@ struct CaseDescription
   double output_interval = 0.01;
   std::vector<Probe<dim>> pressure_probes; ///< Pa, Shepard-interpolated
   std::vector<Probe<dim>> height_probes;   ///< free-surface elevation on the vertical line
+  std::vector<FlowSection> flow_sections;  ///< 2D: volume flow rate, m^2/s
 };
 
 /// Derives the defaults (c0, domain) into `c.fluid`, then builds the solver.

@@ -4,6 +4,7 @@
 #include "sph/wendland_kernel.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace chipflex::sph
 {
@@ -72,6 +73,30 @@ double sample_water_height(const FluidSolver<dim>& fluid, const Eigen::Matrix<do
       surface = z;
   }
   return surface;
+}
+
+double sample_flow_rate(const FluidSolver<2>& fluid, const Eigen::Vector2d& a,
+                        const Eigen::Vector2d& b)
+{
+  const double length = (b - a).norm();
+  if (!(length > 0))
+    return 0;
+  const Eigen::Vector2d t = (b - a) / length, n(t.y(), -t.x());
+  // A slab two particle spacings wide: a lattice aligned with the section has exactly two
+  // of its columns inside, whatever its offset, so a uniform stream gives U L exactly.
+  const double half = fluid.parameters().particle_spacing;
+  const auto& p = fluid.particles();
+  double flux = 0;
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+  {
+    const Eigen::Vector2d r(p.position[0][i] - a.x(), p.position[1][i] - a.y());
+    const double along = r.dot(t), across = r.dot(n);
+    if (along < 0 || along > length || std::abs(across) >= half)
+      continue;
+    const Eigen::Vector2d v(p.velocity[0][i], p.velocity[1][i]);
+    flux += fluid.particle_mass() / p.density[i] * v.dot(n);
+  }
+  return flux / (2 * half);
 }
 
 template double sample_pressure(const FluidSolver<2>&, const Eigen::Matrix<double, 2, 1>&);

@@ -64,7 +64,10 @@ int SolidBody<dim>::add_particle(const Vector& position, double volume, bool fix
   mass_.push_back(material_.density * volume);
   s_.push_back(Tensor::Zero());
   fixed_.push_back(fixed);
+  x_ref_.push_back(position);
+  volume_ref_.push_back(volume);
   neighbour_start_.clear(); // forces a rebuild
+  reference_ready_ = false;
   return static_cast<int>(x_.size()) - 1;
 }
 
@@ -122,6 +125,41 @@ void SolidBody<dim>::update_neighbours()
 }
 
 template <int dim>
+void SolidBody<dim>::compute_corrections()
+{
+  const std::size_t n = x_.size();
+  correction_.assign(n, Tensor::Identity());
+  n_uncorrected_ = 0;
+  if (!material_.kernel_gradient_correction)
+    return;
+  const double support = 2 * h_;
+  std::size_t fallbacks = 0;
+#pragma omp parallel for schedule(static) reduction(+ : fallbacks) if (n > parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    // M_i = sum_j V_j grad_i W_ij (x_j - x_i)^T, the identity for a full kernel on a
+    // regular lattice; the SPH gradient of a linear field u = G x is G M_i^T, so
+    // C_i = M_i^-1 applied to every grad_i W_ij makes it exactly G.
+    Tensor M = Tensor::Zero();
+    for (int k = neighbour_start_[i]; k < neighbour_start_[i + 1]; ++k)
+    {
+      const int j = neighbours_[k];
+      const Vector r = x_[i] - x_[j];
+      const double d = r.norm();
+      if (d >= support || d == 0)
+        continue;
+      const Vector grad = kernel_derivative(d) / d * r;
+      M -= (mass_[j] / rho_[j]) * grad * r.transpose();
+    }
+    if (M.determinant() >= material_.correction_min_determinant)
+      correction_[i] = M.inverse();
+    else
+      ++fallbacks;
+  }
+  n_uncorrected_ = fallbacks;
+}
+
+template <int dim>
 void SolidBody<dim>::compute_accelerations()
 {
   const std::size_t n = x_.size();
@@ -149,14 +187,16 @@ void SolidBody<dim>::compute_accelerations()
         principal.eigenvectors() * r_principal.asDiagonal() * principal.eigenvectors().transpose();
   }
 
-  // Momentum. Pairwise terms are symmetric in (i, j) and multiply the antisymmetric
-  // kernel gradient, so the internal forces cancel in pairs.
+  // Momentum. The pair force m_i m_j (T_i C_i + T_j C_j) grad_i W_ij is antisymmetric in
+  // (i, j) (grad_j W_ji = -grad_i W_ij), so the internal forces cancel in pairs with the
+  // correction too (Bonet & Lok 1999).
   const double c = material_.wave_speed();
 #pragma omp parallel for schedule(static) if (n > parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
     Vector a = gravity_ + f_ext_[i] / mass_[i];
     const Tensor si = sigma_[i] / (rho_[i] * rho_[i]);
+    const Tensor& ci = correction_[i];
     for (int k = neighbour_start_[i]; k < neighbour_start_[i + 1]; ++k)
     {
       const int j = neighbours_[k];
@@ -167,7 +207,10 @@ void SolidBody<dim>::compute_accelerations()
       const Vector grad = kernel_derivative(d) / d * r; // grad_i W_ij
       const double f = kernel(d) / w_dp_;
       const double f4 = (f * f) * (f * f);
-      Tensor T = si + sigma_[j] / (rho_[j] * rho_[j]) + f4 * (artificial_[i] + artificial_[j]);
+      const Tensor& cj = correction_[j];
+      const Tensor Ti = si + f4 * artificial_[i];
+      const Tensor Tj = sigma_[j] / (rho_[j] * rho_[j]) + f4 * artificial_[j];
+      Vector pair = Ti * (ci * grad) + Tj * (cj * grad);
       const double vr = (v_[i] - v_[j]).dot(r);
       if (vr < 0)
       {
@@ -175,9 +218,9 @@ void SolidBody<dim>::compute_accelerations()
         const double pi =
             (-material_.viscosity_alpha * c * mu + material_.viscosity_beta * mu * mu) /
             (0.5 * (rho_[i] + rho_[j]));
-        T.diagonal().array() -= pi;
+        pair -= pi * 0.5 * (ci + cj) * grad;
       }
-      a += mass_[j] * (T * grad);
+      a += mass_[j] * pair;
     }
     acceleration_[i] = a;
   }
@@ -198,6 +241,7 @@ void SolidBody<dim>::compute_stress_rates()
   {
     Tensor L = Tensor::Zero(); // L(a, b) = dv_a / dx_b
     double drho = 0;
+    const Tensor& ci = correction_[i];
     for (int k = neighbour_start_[i]; k < neighbour_start_[i + 1]; ++k)
     {
       const int j = neighbours_[k];
@@ -205,7 +249,7 @@ void SolidBody<dim>::compute_stress_rates()
       const double d = r.norm();
       if (d >= support || d == 0)
         continue;
-      const Vector grad = kernel_derivative(d) / d * r;
+      const Vector grad = ci * (kernel_derivative(d) / d * r);
       const Vector vij = v_[i] - v_[j];
       drho += mass_[j] * vij.dot(grad);
       L -= (mass_[j] / rho_[j]) * vij * grad.transpose();
@@ -222,12 +266,151 @@ void SolidBody<dim>::compute_stress_rates()
 }
 
 template <int dim>
+void SolidBody<dim>::setup_reference()
+{
+  // Neighbours within the support in the reference configuration, for good.
+  const std::size_t n = x_ref_.size();
+  const double support = 2 * h_;
+  neighbour_start_.assign(n + 1, 0);
+  neighbours_.clear();
+  reference_gradient_.clear();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (std::size_t j = 0; j < n; ++j)
+    {
+      const Vector r = x_ref_[i] - x_ref_[j];
+      const double d = r.norm();
+      if (j == i || d >= support)
+        continue;
+      neighbours_.push_back(static_cast<int>(j));
+      reference_gradient_.push_back(kernel_derivative(d) / d * r); // grad_0,i W_ij
+    }
+    neighbour_start_[i + 1] = static_cast<int>(neighbours_.size());
+  }
+  correction_.assign(n, Tensor::Identity());
+  n_uncorrected_ = 0;
+  if (material_.kernel_gradient_correction)
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      Tensor M = Tensor::Zero(); // sum_j V_j grad_0 W_ij (X_j - X_i)^T
+      for (int k = neighbour_start_[i]; k < neighbour_start_[i + 1]; ++k)
+      {
+        const int j = neighbours_[k];
+        M += volume_ref_[j] * reference_gradient_[k] * (x_ref_[j] - x_ref_[i]).transpose();
+      }
+      if (M.determinant() >= material_.correction_min_determinant)
+        correction_[i] = M.inverse();
+      else
+        ++n_uncorrected_;
+    }
+  piola_.assign(n, Tensor::Zero());
+  deformation_.assign(n, Tensor::Identity());
+  acceleration_.assign(n, Vector::Zero());
+  reference_ready_ = true;
+}
+
+template <int dim>
+void SolidBody<dim>::step_total_lagrangian(double dt)
+{
+  if (!reference_ready_)
+    setup_reference();
+  const std::size_t n = x_.size();
+  const double G = material_.shear_modulus();
+  const double lambda = material_.bulk_modulus() - 2.0 / 3.0 * G; // 3D Lame: plane strain
+  const double rho0 = material_.density;
+  const Tensor identity = Tensor::Identity();
+
+  // Deformation gradient from the displacements u = x - X (so that a particle whose
+  // correction fell back is still stress free at rest), then S and P = F S.
+#pragma omp parallel for schedule(static) if (n > parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const Vector ui = x_[i] - x_ref_[i];
+    Tensor H = Tensor::Zero(); // displacement gradient
+    for (int k = neighbour_start_[i]; k < neighbour_start_[i + 1]; ++k)
+    {
+      const int j = neighbours_[k];
+      H += volume_ref_[j] * (x_[j] - x_ref_[j] - ui) *
+           (correction_[i] * reference_gradient_[k]).transpose();
+    }
+    const Tensor F = identity + H;
+    deformation_[i] = F;
+    const Tensor E = 0.5 * (F.transpose() * F - identity);
+    const Tensor S = lambda * E.trace() * identity + 2 * G * E;
+    piola_[i] = F * S;
+    const double J = F.determinant();
+    rho_[i] = rho0 / J;
+    const Tensor cauchy = piola_[i] * F.transpose() / J;
+    // Plane strain: sigma_zz = lambda tr(E) (in-plane E, E_zz = 0) enters the mean stress.
+    const double mean = (cauchy.trace() + (dim == 2 ? lambda * E.trace() / J : 0.0)) / 3.0;
+    s_[i] = cauchy - mean * identity;
+  }
+
+  // Forces: the derivative of sum_i V_i psi(F_i), f_i = sum_j V_i V_j (P_i C_i + P_j C_j)
+  // grad_0 W_ij (antisymmetric in (i, j)), plus Monaghan's viscosity on approaching pairs
+  // in the current configuration.
+  const double c = material_.wave_speed(), support = 2 * h_;
+  const double hourglass = 0.5 * material_.hourglass_control * material_.youngs_modulus;
+#pragma omp parallel for schedule(static) if (n > parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    Vector a = gravity_ + f_ext_[i] / mass_[i];
+    const Tensor PCi = piola_[i] * correction_[i];
+    const Tensor Fi = deformation_[i];
+    for (int k = neighbour_start_[i]; k < neighbour_start_[i + 1]; ++k)
+    {
+      const int j = neighbours_[k];
+      a += (volume_ref_[i] * volume_ref_[j] / mass_[i]) *
+           ((PCi + piola_[j] * correction_[j]) * reference_gradient_[k]);
+      const Vector r = x_[i] - x_[j];
+      const double d = r.norm();
+      if (hourglass > 0 && d > 0)
+      {
+        // Ganzenmueller 2015, eq. 20-22: delta = (F X_ij - x_ij) . x_ij / |x_ij| seen from
+        // both ends; a positive one means j sits closer than F predicts: push apart.
+        const Vector X = x_ref_[j] - x_ref_[i], e = -r / d;
+        const double R2 = X.squaredNorm();
+        const double delta = (Fi * X + r).dot(e) + (deformation_[j] * X + r).dot(e);
+        a -= hourglass * volume_ref_[i] * volume_ref_[j] * kernel(std::sqrt(R2)) / R2 * delta /
+             mass_[i] * e;
+      }
+      const double vr = (v_[i] - v_[j]).dot(r);
+      if (vr < 0 && d < support && d > 0)
+      {
+        const double mu = h_ * vr / (d * d + 0.01 * h_ * h_);
+        const double pi =
+            (-material_.viscosity_alpha * c * mu + material_.viscosity_beta * mu * mu) /
+            (0.5 * (rho_[i] + rho_[j]));
+        a -= mass_[j] * pi * (kernel_derivative(d) / d) * r;
+      }
+    }
+    acceleration_[i] = a;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (fixed_[i])
+      clamp_impulse_ += dt * mass_[i] * acceleration_[i];
+    else
+    {
+      v_[i] += dt * acceleration_[i];
+      x_[i] += dt * v_[i];
+    }
+  }
+}
+
+template <int dim>
 void SolidBody<dim>::step(double dt)
 {
+  if (material_.formulation == SolidFormulation::total_lagrangian)
+  {
+    step_total_lagrangian(dt);
+    return;
+  }
   // Symplectic Euler over the whole elastic state: the stress (like the position)
   // is advanced with the *new* velocity. Advancing it with the old one, as plain
   // explicit Euler does, grows the elastic waves at the usual CFL numbers.
   update_neighbours();
+  compute_corrections();
   compute_accelerations();
   const std::size_t n = x_.size();
   for (std::size_t i = 0; i < n; ++i)
@@ -308,6 +491,7 @@ void SolidBody<dim>::restore(const std::vector<double>& state)
   }
   std::copy(p, p + dim, clamp_impulse_.data());
   neighbour_start_.clear();
+  reference_ready_ = false; // rebuilt from the reference positions, which do not change
 }
 
 template class SolidBody<2>;

@@ -1,6 +1,7 @@
-// Body kind `sph solid`: an elastic strip of SPH solid particles (Gray, Monaghan & Swift
-// 2001), clamped at one end, 2D only. Its defaults are the elastic gate's material
-// (Table 1: rubber, E = 12 MPa, nu = 0.4, 1100 kg/m^3).
+// Body kind `sph solid`: an elastic strip of SPH solid particles, clamped at one end, 2D
+// only: total-Lagrangian St Venant-Kirchhoff with corrected kernel gradients (Bonet & Lok
+// 1999) by default, or the seed's Gray, Monaghan & Swift 2001 solid. Its defaults are the
+// elastic gate's material (Table 1: rubber, E = 12 MPa, nu = 0.4, 1100 kg/m^3).
 
 #include "apps/body_kinds/body_kind.h"
 #include "common/input_error.h"
@@ -16,7 +17,7 @@ public:
   std::string name() const override { return "sph solid"; }
   std::string description() const override
   {
-    return "sph solid (Gray et al. 2001 strip clamped at one end; 2D)";
+    return "sph solid (SPH strip clamped at one end, total Lagrangian or Gray et al. 2001; 2D)";
   }
 
   void declare(BodyKeyDeclarations& keys) const override
@@ -26,7 +27,8 @@ public:
     keys.declare("density", "1100", "double >= 0", "kg/m^3.");
     keys.declare("youngs modulus", "1.2e7", "double >= 0", "E, Pa (Table 1).");
     keys.declare("poisson ratio", "0.4", "double", "nu, - (Table 1); -1 < nu < 0.5.");
-    keys.declare("artificial stress", "0.2", "double >= 0", "epsilon (Table 1).");
+    keys.declare("artificial stress", "0.2", "double >= 0",
+                 "epsilon (Table 1); updated Lagrangian only.");
     keys.declare("solid viscosity", "1", "double >= 0", "Monaghan alpha, -.");
     keys.declare("spacing", "0.001", "double >= 0", "Particle spacing along the strip, m.");
     keys.declare("layers", "6", "integer >= 2", "Particles across the thickness.");
@@ -34,6 +36,13 @@ public:
     keys.declare("clamp columns", "8", "integer >= 2", "Fixed particles per row.");
     keys.declare("smoothing factor", "1.3", "double >= 0", "h / spacing, -.");
     keys.declare("direction", "0, -1", "text", "Unit vector from the clamped to the free end.");
+    keys.declare("formulation", "total lagrangian", "total lagrangian|updated lagrangian",
+                 "total lagrangian: St Venant-Kirchhoff on reference neighbours (Bonet & Lok "
+                 "1999); updated lagrangian: the seed's Gray et al. 2001 solid (docs/sph.md).");
+    keys.declare("kernel gradient correction", "true", "bool",
+                 "Bonet & Lok (1999) corrected kernel gradients (docs/sph.md).");
+    keys.declare("hourglass control", "10", "double >= 0",
+                 "Total Lagrangian: Ganzenmueller (2015) hourglass coefficient alpha, -; 0: off.");
   }
 
   std::unique_ptr<coupling::CoupledBody<2>> build(const BodyKeys& keys,
@@ -48,6 +57,11 @@ public:
                        "must lie in (-1, 0.5), got " + keys.text("poisson ratio"));
     material.artificial_stress = keys.number("artificial stress");
     material.viscosity_alpha = keys.number("solid viscosity");
+    material.kernel_gradient_correction = keys.flag("kernel gradient correction");
+    material.hourglass_control = keys.number("hourglass control");
+    material.formulation = keys.text("formulation") == "updated lagrangian"
+                               ? sph::SolidFormulation::updated_lagrangian
+                               : sph::SolidFormulation::total_lagrangian;
     sph::SolidStripLayout layout;
     layout.clamped_end_centre = context.placement.position;
     layout.direction = keys.vector<2>("direction");
