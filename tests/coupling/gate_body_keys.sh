@@ -40,6 +40,8 @@ subsection bodies
     set name        = gate
     set kind        = sph solid
     set position    = 0.1025, 0.079
+    set length      = 0.079
+    set thickness   = 0.005
     set weight      = $2
     set probe point = $3
   end
