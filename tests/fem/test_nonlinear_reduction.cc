@@ -66,6 +66,43 @@ struct Beam
 {
   double length = 1, thickness = 0.02, e = 1e7, nu = 0.3, rho = 1000;
   double ei() const { return e * std::pow(thickness, 3) / 12; } // plane stress, per metre
+
+  Material material() const
+  {
+    Material m;
+    m.youngs_modulus = e;
+    m.poisson_ratio = nu;
+    m.density = rho;
+    m.plane_stress = true;
+    return m;
+  }
+  /// The 2D cantilever (two elements through the thickness), clamped at x = 0.
+  std::string write_mesh(const std::string& name) const
+  {
+    meshes::BlockMeshSpec spec;
+    spec.dim = 2;
+    spec.extent = {length, thickness, 0};
+    spec.long_axis = 0;
+    spec.clamp_at_max = false;
+    spec.size = thickness / 2;
+    const std::string mesh = scratch(name);
+    meshes::write_block_mesh(spec, mesh);
+    return mesh;
+  }
+  /// 4 modes + the static tip-load mode + the modal derivatives of the first 4 modes
+  /// (10 pairs; deflation keeps 9).
+  ReductionSettings nonlinear_reduction(const std::string& mesh) const
+  {
+    ReductionSettings s;
+    s.mesh_file = mesh;
+    s.clamp_group = "clamp";
+    s.material = material();
+    s.n_modes = 4;
+    s.static_modes = {"force:tip:0,-1"};
+    s.nonlinear = true;
+    s.derivative_modes = 4;
+    return s;
+  }
 };
 
 /// Static equilibrium of the reduced body under a dead tip force (0, -p) shared equally by
@@ -130,26 +167,7 @@ TEST_CASE("nonlinear reduced cantilever follows the elastica up to P L^2/EI = 10
           "[fem][nonlinear]")
 {
   const Beam beam;
-  meshes::BlockMeshSpec spec;
-  spec.dim = 2;
-  spec.extent = {beam.length, beam.thickness, 0};
-  spec.long_axis = 0;
-  spec.clamp_at_max = false;
-  spec.size = beam.thickness / 2;
-  const std::string mesh = scratch("elastica_beam.msh");
-  meshes::write_block_mesh(spec, mesh);
-
-  ReductionSettings s;
-  s.mesh_file = mesh;
-  s.clamp_group = "clamp";
-  s.material.youngs_modulus = beam.e;
-  s.material.poisson_ratio = beam.nu;
-  s.material.density = beam.rho;
-  s.material.plane_stress = true;
-  s.n_modes = 4;
-  s.static_modes = {"force:tip:0,-1"};
-  s.nonlinear = true;
-  s.derivative_modes = 4; // 10 pairs; deflation keeps 9
+  const ReductionSettings s = beam.nonlinear_reduction(beam.write_mesh("elastica_beam.msh"));
   const ReducedBodyData body = reduce_body(s);
   REQUIRE(body.nonlinear());
   CHECK(body.n_modal_derivatives >= 6);
@@ -234,28 +252,9 @@ TEST_CASE("nonlinear reduced cantilever against the full nonlinear FE model", "[
   // The same mesh, material (St Venant-Kirchhoff) and consistent dead tip load for both:
   // what differs is only the reduction (u = Psi q with 4 modes + 1 static + 9 derivatives).
   const Beam beam;
-  meshes::BlockMeshSpec spec;
-  spec.dim = 2;
-  spec.extent = {beam.length, beam.thickness, 0};
-  spec.long_axis = 0;
-  spec.clamp_at_max = false;
-  spec.size = beam.thickness / 2;
-  const std::string mesh_file = scratch("elastica_beam_full.msh");
-  meshes::write_block_mesh(spec, mesh_file);
-  Material material;
-  material.youngs_modulus = beam.e;
-  material.poisson_ratio = beam.nu;
-  material.density = beam.rho;
-  material.plane_stress = true;
-
-  ReductionSettings s;
-  s.mesh_file = mesh_file;
-  s.clamp_group = "clamp";
-  s.material = material;
-  s.n_modes = 4;
-  s.static_modes = {"force:tip:0,-1"};
-  s.nonlinear = true;
-  s.derivative_modes = 4;
+  const std::string mesh_file = beam.write_mesh("elastica_beam_full.msh");
+  const Material material = beam.material();
+  const ReductionSettings s = beam.nonlinear_reduction(mesh_file);
   const ReducedBodyData reduced = reduce_body(s);
   const PolynomialStiffness svk(reduced.stiffness_matrix, reduced.quadratic_stiffness,
                                 reduced.cubic_stiffness);
