@@ -54,7 +54,7 @@ def main():
                     help="borehole wall to the V's apex along the bisector, m (default D/2)")
     ap.add_argument("--length", type=float, default=0.03, help="segment length along the axis, m")
     ap.add_argument("--barrier", type=float, default=0.02, help="barrier position z, m")
-    ap.add_argument("--margin", type=float, default=0.003, help="walls beyond both ends, m")
+    ap.add_argument("--margin", type=float, default=0.004, help="walls beyond both ends, m")
     ap.add_argument("--bore-margin", type=float, default=15,
                     help="borehole wall beyond the flute's edges, degrees")
     ap.add_argument("--size", type=float, default=0.001, help="triangle edge, m")
