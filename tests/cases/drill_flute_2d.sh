@@ -26,14 +26,14 @@ awk -F, -v barrier=0.02 -v half=0.00025 -v end=0.02 '
       if (x + half - 5e-5 > barrier) { printf "FAIL: chip%d at x = %.5f m at t = %s s, past the barrier\n", c, x, $1; bad = 1 }
       last[c] = x }
     if ($1 >= 2 * end / 3) { n++; force += $col["contact_wall_1_force_x_N"]
-      drop += $col["p_tip_Pa"] - $col["p_top_Pa"]; in += $col["inlet_mass_flow"]; out += $col["outlet_mass_flow"] } }
+      drop += $col["p_tip_Pa"] - $col["p_top_Pa"]; fin += $col["inlet_mass_flow"]; fout += $col["outlet_mass_flow"] } }
   END { if (bad) exit 1
         if (n == 0) { print "FAIL: no probe rows in the last third"; exit 1 }
         for (c = 1; c <= 3; ++c) if (barrier - last[c] > 0.0015) { printf "FAIL: chip%d ends at x = %.5f m, not at the barrier\n", c, last[c]; exit 1 }
         printf "chips at %.3f %.3f %.3f mm (barrier 20 mm); last third: barrier contact force %.2f N/m, pressure drop %.0f Pa, inflow %.3f outflow %.3f kg/(s m) (%+.1f %%)\n",
-               1e3 * last[1], 1e3 * last[2], 1e3 * last[3], force / n, drop / n, in / n, out / n, 100 * (out / in - 1)
+               1e3 * last[1], 1e3 * last[2], 1e3 * last[3], force / n, drop / n, fin / n, fout / n, 100 * (fout / fin - 1)
         if (!(force / n > 0)) { print "FAIL: no contact force on the barrier"; exit 1 }
         if (!(drop / n > 0)) { print "FAIL: the pressure does not fall along the flow"; exit 1 }
-        if (out / in > 1.15 || out / in < 0.85) { print "FAIL: outflow differs from inflow by more than 15 %"; exit 1 } }
+        if (fout / fin > 1.15 || fout / fin < 0.85) { print "FAIL: outflow differs from inflow by more than 15 %"; exit 1 } }
 ' "$dir/out/probes.csv" || exit 1
 echo "ok: the chips stop at the barrier"

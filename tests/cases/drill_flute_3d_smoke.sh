@@ -1,5 +1,5 @@
 #!/bin/sh
-# A short run (1 ms) of both 3D drill-flute variants through cases/drill_flute/run_flute.sh:
+# A short run (0.5 ms) of both 3D drill-flute variants through cases/drill_flute/run_flute.sh:
 # the geometry script, `chipflex mesh chip` + `reduce`, the two runs and plot_flute.py.
 # Checks that every output exists (particles, skins, per-chip CSVs, drill.csv, the PNG),
 # that the probes carry the chips' strain energy and the walls' contact torques, that the
@@ -11,7 +11,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
-CHIPFLEX=$chipflex THREADS=2 sh "$here/../../cases/drill_flute/run_flute.sh" "$dir" 0.001 > "$dir/log" 2>&1 ||
+CHIPFLEX=$chipflex THREADS=2 sh "$here/../../cases/drill_flute/run_flute.sh" "$dir" 0.0005 > "$dir/log" 2>&1 ||
   fail "run_flute.sh failed: $(tail -5 "$dir/log")"
 cat "$dir/log" | grep '^figures:'
 for f in rigid/particles.xdmf rigid/skins.xdmf flexible/skins.xdmf rigid/chip1.csv flexible/chip2.csv \
