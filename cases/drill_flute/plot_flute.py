@@ -28,7 +28,7 @@ FLANKS, BARRIER, BOREHOLE = "contact_surface_1", "contact_surface_2", "contact_b
 def atomic_csv(path, header, rows):
     tmp = path + ".tmp"
     with open(tmp, "w", newline="") as f:
-        w = csv.writer(f)
+        w = csv.writer(f, lineterminator="\n")
         w.writerow(header)
         w.writerows(rows)
     os.replace(tmp, path)
