@@ -103,12 +103,12 @@ def main():
             for k in range(nz):
                 p00 = (*pts[i], zs[k]); p10 = (*pts[i + 1], zs[k])
                 p11 = (*pts[i + 1], zs[k + 1]); p01 = (*pts[i], zs[k + 1])
-                # (p10 - p00) along the flank outwards, (p01 - p00) along +z: the normal
-                # of the upper flank (sign +1) points away from the bisector, so flip it.
+                # (p10 - p00) along the flank outwards, (p01 - p00) along +z: their cross
+                # product on the upper flank (sign +1) points towards the bisector.
                 if sign > 0:
-                    quad(walls, p00, p01, p11, p10)
-                else:
                     quad(walls, p00, p10, p11, p01)
+                else:
+                    quad(walls, p00, p01, p11, p10)
     write_stl(os.path.join(a.out, "flute_walls.stl"), "flute_walls", walls)
 
     # The flute section as a polygon: apex, bottom flank end, the arc, top flank end.
@@ -150,12 +150,12 @@ def main():
             b0 = (cx + r0 * (q[0] - cx), cy + r0 * (q[1] - cy), a.barrier)
             a1 = (cx + r1 * (p[0] - cx), cy + r1 * (p[1] - cy), a.barrier)
             b1 = (cx + r1 * (q[0] - cx), cy + r1 * (q[1] - cy), a.barrier)
-            # counter-clockwise p -> q seen from +z: (a1 - a0) x (b0 - a0) points -z.
+            # counter-clockwise p -> q seen from +z: (b1 - a0) x (a1 - a0) points -z.
             if i == 0:
-                barrier.append((a0, a1, b1))
+                barrier.append((a0, b1, a1))
             else:
-                barrier.append((a0, a1, b1))
-                barrier.append((a0, b1, b0))
+                barrier.append((a0, b1, a1))
+                barrier.append((a0, b0, b1))
     write_stl(os.path.join(a.out, "barrier.stl"), "barrier", barrier)
 
     # Fluid region: the section swept from z0 to z1, closed, normals outwards.
