@@ -3,6 +3,7 @@
 #include "apps/body_case_keys.h"
 #include "apps/contact_case_keys.h"
 #include "common/input_error.h"
+#include "coupling/fluid_overlap.h"
 #include "meshes/surface_mesh.h"
 
 #include <cmath>
@@ -98,6 +99,11 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
   prm.declare_entry("domain max", "", Anything(), "See domain min, m.");
   prm.declare_entry("initial velocity", "", Anything(),
                     "Velocity of the fluid blocks at t = 0 (dim components), m/s; empty: at rest.");
+  prm.declare_entry("fluid region", "", Anything(),
+                    "'FILE [group NAME] [flip]': a closed surface (gmsh .msh or STL, m; normals "
+                    "outwards, `flip` reverses them); fluid-block and buffer particles start "
+                    "only inside it, at least dp/2 from its faces (a duct whose section is not "
+                    "a box). Empty: the blocks as they are.");
   prm.declare_entry("lost fraction limit", "0.01", Double(0, 1),
                     "The run stops (its last checkpoint kept) once more than this fraction of "
                     "the fluid particles has left the domain box or turned non-finite, -.");
@@ -124,12 +130,14 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
   prm.declare_entry("polylines", "", Anything(),
                     "2D only: extra walls 'x1, y1, x2, y2, ...' (m), separated by ';'; the "
                     "fluid side is on the right of the direction of travel.");
-  prm.declare_entry("surfaces", "", Anything(),
-                    "Walls from surface meshes, separated by ';', each 'FILE [group NAME] "
-                    "[flip]': a gmsh .msh (2D: its lines; 3D: its triangles and quads, or the "
-                    "boundary of its elements) or an STL file (3D), m. The fluid lies on the "
-                    "side of the face normals (`flip` reverses them); relative names are looked "
-                    "up beside the case file.");
+  prm.declare_entry(
+      "surfaces", "", Anything(),
+      "Walls from surface meshes, separated by ';', each 'FILE [group NAME] "
+      "[flip] [barrier]': a gmsh .msh (2D: its lines; 3D: its triangles and quads, or the "
+      "boundary of its elements) or an STL file (3D), m. The fluid lies on the "
+      "side of the face normals (`flip` reverses them); relative names are looked "
+      "up beside the case file. `barrier`: a permeable barrier (bodies feel it, "
+      "the fluid does not; subsection contact).");
   prm.declare_entry("wall model", "lennard jones", Selection("dummy particles|lennard jones"),
                     "Model of the extra walls.");
   prm.declare_entry("fluid passes", "", Anything(),
@@ -265,6 +273,33 @@ std::vector<sph::Probe<dim>> probes_of(const std::string& key, const std::string
   return out;
 }
 
+/// A surface given as 'FILE [group NAME] [flip]' (with `barrier` when `barrier` is not
+/// null); relative names are looked up beside the case file.
+template <int dim>
+meshes::SurfaceMesh<dim> read_surface_spec(const std::string& key, const std::string& spec,
+                                           const std::string& case_path, bool* barrier)
+{
+  std::istringstream words(spec);
+  std::string file, word, group;
+  bool flip = false;
+  words >> file;
+  while (words >> word)
+    if (word == "flip")
+      flip = true;
+    else if (word == "barrier" && barrier)
+      *barrier = true;
+    else if (word == "group" && (words >> group))
+      continue;
+    else
+      throw InputError(key, "'" + spec + "': expected 'FILE [group NAME] [flip]" +
+                                (barrier ? std::string(" [barrier]'") : std::string("'")));
+  namespace fs = std::filesystem;
+  const fs::path beside = fs::path(case_path).parent_path() / file;
+  if (!fs::path(file).is_absolute() && fs::exists(beside))
+    file = beside.string();
+  return meshes::read_surface_mesh<dim>(file, group, flip);
+}
+
 template <int dim>
 std::vector<sph::FlowSection> sections_of(const std::string& key, const std::string& text)
 {
@@ -380,6 +415,17 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
   f.maximum_lost_fraction = prm.get_double("lost fraction limit");
   if (!trim(prm.get("initial velocity")).empty())
     c.initial_velocity = vector_of<dim>("geometry/initial velocity", prm.get("initial velocity"));
+  if (!trim(prm.get("fluid region")).empty())
+  {
+    const auto mesh = read_surface_spec<dim>("geometry/fluid region", prm.get("fluid region"),
+                                             case_path, nullptr);
+    auto region = std::make_shared<coupling::SkinOverlap<dim>>(mesh.vertices, mesh.faces,
+                                                               0.5 * c.fluid.particle_spacing);
+    if (!region->closed())
+      throw InputError("geometry/fluid region", "the surface is not closed");
+    c.fluid_region = [region](const Eigen::Matrix<double, dim, 1>& x)
+    { return region->encloses(x) && !region->near_face(x); };
+  }
   prm.enter_subsection("tank");
   c.tank.enabled = prm.get_bool("enabled");
   c.tank.min = vector_of<dim>("geometry/tank/min corner", prm.get("min corner"));
@@ -439,29 +485,16 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
   const auto surfaces = split(prm.get("surfaces"), ';');
   for (std::size_t k = 0; k < surfaces.size(); ++k)
   {
-    std::istringstream words(surfaces[k]);
-    std::string file, word, group;
-    bool flip = false;
-    words >> file;
-    while (words >> word)
-      if (word == "flip")
-        flip = true;
-      else if (word == "group" && (words >> group))
-        continue;
-      else
-        throw InputError("geometry/walls/surfaces",
-                         "'" + surfaces[k] + "': expected 'FILE [group NAME] [flip]'");
-    namespace fs = std::filesystem;
-    const fs::path beside = fs::path(case_path).parent_path() / file;
-    if (!fs::path(file).is_absolute() && fs::exists(beside))
-      file = beside.string();
-    const auto mesh = meshes::read_surface_mesh<dim>(file, group, flip);
+    bool barrier = false;
+    const auto mesh =
+        read_surface_spec<dim>("geometry/walls/surfaces", surfaces[k], case_path, &barrier);
     sph::WallSurface<dim> w;
     w.name = "surface " + std::to_string(k + 1);
     w.model = prm.get("wall model") == "lennard jones" ? sph::WallModel::lennard_jones
                                                        : sph::WallModel::dummy_particles;
     w.vertices = mesh.vertices;
     w.faces = mesh.faces;
+    w.fluid_passes = barrier;
     c.walls.push_back(w);
   }
   prm.leave_subsection();

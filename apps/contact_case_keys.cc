@@ -8,6 +8,7 @@
 namespace chipflex::apps
 {
 using dealii::ParameterHandler;
+using dealii::Patterns::Anything;
 using dealii::Patterns::Bool;
 using dealii::Patterns::Double;
 
@@ -45,6 +46,10 @@ void declare_contact_keys(ParameterHandler& prm)
   prm.declare_entry("thickness", "0", Double(0),
                     "Deepest overlap counted as contact, m; 0: half the shortest mean skin-edge "
                     "length of the bodies.");
+  prm.declare_entry("torque axis", "", Anything(),
+                    "The axis for the walls' contact probes (contact_<wall>_torque_Nm): 3D a "
+                    "point and a direction 'x, y, z, ax, ay, az', 2D a point 'x, y' (about z), "
+                    "m; empty: through the origin along z.");
   prm.leave_subsection();
 }
 
@@ -61,13 +66,35 @@ try
   p.steps = prm.get_double("steps per contact");
   p.tangential_ratio = prm.get_double("tangential stiffness ratio");
   p.thickness = prm.get_double("thickness");
+  {
+    std::istringstream words(prm.get("torque axis"));
+    std::string word;
+    while (std::getline(words, word, ','))
+      if (word.find_first_not_of(" \t") != std::string::npos)
+        try
+        {
+          c.torque_axis.push_back(std::stod(word));
+        }
+        catch (const std::exception&)
+        {
+          throw InputError("contact/torque axis", "'" + word + "' is not a number");
+        }
+  }
   prm.leave_subsection();
   coupling::check(p, "contact");
   prm.enter_subsection("geometry");
   prm.enter_subsection("walls");
   const bool barrier = prm.get("fluid passes").find_first_not_of(" \t") != std::string::npos;
+  std::istringstream surfaces(prm.get("surfaces"));
+  bool surface_barrier = false;
+  for (std::string word; surfaces >> word;)
+    surface_barrier = surface_barrier || word == "barrier" || word == "barrier;";
   prm.leave_subsection();
   prm.leave_subsection();
+  if (surface_barrier && !c.enabled)
+    throw InputError("geometry/walls/surfaces",
+                     "a permeable barrier is felt by bodies only: set `enabled = true` in "
+                     "`subsection contact`");
   if (barrier && !c.enabled)
     throw InputError("geometry/walls/fluid passes",
                      "a permeable barrier is felt by bodies only: set `enabled = true` in "

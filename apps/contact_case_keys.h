@@ -6,6 +6,7 @@
 #include "coupling/contact.h"
 
 #include <string>
+#include <vector>
 
 namespace dealii
 {
@@ -18,6 +19,9 @@ struct ContactCase
 {
   bool enabled = false;
   coupling::ContactParameters parameters;
+  /// The axis about which every wall's contact torque is probed: a point and, in 3D, a
+  /// direction (x, y, z, ax, ay, az; 2D: x, y, about z), m.
+  std::vector<double> torque_axis;
 };
 
 void declare_contact_keys(dealii::ParameterHandler& prm);

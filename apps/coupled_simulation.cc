@@ -70,6 +70,24 @@ CoupledSimulation<dim>::CoupledSimulation(const sph::CaseDescription<dim>& fluid
   }
   if (contact.enabled)
     cosim_->enable_contact(contact.parameters);
+  const auto& a = contact.torque_axis;
+  if (!a.empty())
+  {
+    const std::size_t expected = dim == 3 ? 6 : 2;
+    if (a.size() != expected)
+      throw InputError("contact/torque axis",
+                       dim == 3 ? "needs a point and a direction, x, y, z, ax, ay, az"
+                                : "needs a point, x, y (2D torques are about z)");
+    for (int d = 0; d < dim; ++d)
+      torque_point_[d] = a[d];
+    if constexpr (dim == 3)
+    {
+      torque_direction_ = Eigen::Vector3d(a[3], a[4], a[5]);
+      if (!(torque_direction_.norm() > 0))
+        throw InputError("contact/torque axis", "the direction must not be zero");
+      torque_direction_.normalize();
+    }
+  }
   record();
 }
 
@@ -124,10 +142,32 @@ ParticleFrame CoupledSimulation<dim>::frame() const
   return fluid_.frame();
 }
 
+namespace
+{
+/// A wall's name as a column name: spaces become underscores.
+std::string column_name(std::string name)
+{
+  for (char& c : name)
+    if (c == ' ' || c == ',')
+      c = '_';
+  return name;
+}
+} // namespace
+
 template <int dim>
 std::vector<std::string> CoupledSimulation<dim>::probe_columns() const
 {
   auto columns = fluid_.probe_columns();
+  // Contact reactions on every wall (tank, case walls, barriers, moving walls): the sum
+  // of the forces the bodies' contacts put on it and their torque about the torque axis.
+  if (const auto* contact = cosim_->contact())
+    for (int o = 0; o < contact->n_obstacles(); ++o)
+    {
+      const std::string prefix = "contact_" + column_name(contact->obstacle(o).name);
+      for (int d = 0; d < dim; ++d)
+        columns.push_back(prefix + "_force_" + axis_name[d] + "_N");
+      columns.push_back(prefix + "_torque_Nm");
+    }
   for (const auto& b : case_.bodies)
   {
     for (int d = 0; d < dim; ++d)
@@ -140,6 +180,7 @@ std::vector<std::string> CoupledSimulation<dim>::probe_columns() const
       for (int d = 0; d < 3; ++d)
         columns.push_back(b.name + "_r" + axis_name[d] + "_rad");
     columns.push_back(b.name + "_deflection_m");
+    columns.push_back(b.name + "_strain_energy_J");
     for (const auto& [name, value] : b.body->extra_probes())
       columns.push_back(b.name + "_" + name);
   }
@@ -150,6 +191,25 @@ template <int dim>
 std::vector<double> CoupledSimulation<dim>::probe_values() const
 {
   auto values = fluid_.probe_values();
+  if (const auto* contact = cosim_->contact())
+    for (int o = 0; o < contact->n_obstacles(); ++o)
+    {
+      const auto& x = contact->obstacle(o).vertices;
+      const auto& f = contact->obstacle_forces(o);
+      Vector force = Vector::Zero();
+      double torque = 0;
+      for (std::size_t k = 0; k < f.size() && k < x.size(); ++k)
+      {
+        force += f[k];
+        const Vector r = x[k] - torque_point_;
+        if constexpr (dim == 2)
+          torque += r[0] * f[k][1] - r[1] * f[k][0];
+        else
+          torque += torque_direction_.dot(r.cross(f[k]));
+      }
+      values.insert(values.end(), force.data(), force.data() + dim);
+      values.push_back(torque);
+    }
   for (std::size_t b = 0; b < case_.bodies.size(); ++b)
   {
     const auto& body = *case_.bodies[b].body;
@@ -160,6 +220,7 @@ std::vector<double> CoupledSimulation<dim>::probe_values() const
     for (double r : rotation_probe<dim>(body.frame_rotation()))
       values.push_back(r);
     values.push_back(body.max_deflection());
+    values.push_back(body.strain_energy());
     for (const auto& [name, value] : body.extra_probes())
       values.push_back(value);
   }

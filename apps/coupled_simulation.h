@@ -63,6 +63,9 @@ private:
   std::vector<std::vector<Sample>> histories_;
   std::vector<std::vector<Vector>> reference_skins_; ///< skin nodes at t = 0
   mutable SurfaceOutput<dim> skins_;
+  /// The axis of the walls' contact torque probes (contact/torque axis).
+  Vector torque_point_ = Vector::Zero();
+  Eigen::Vector3d torque_direction_ = Eigen::Vector3d::UnitZ();
   std::chrono::steady_clock::time_point started_;
   double restored_wall_seconds_ = 0;
 };

@@ -249,61 +249,91 @@ std::uint64_t ContactModel<dim>::cell_key(const Vector& x) const
 template <int dim>
 void ContactModel<dim>::bin_faces()
 {
-  const int ns = n_obstacles() + n_bodies();
-  std::size_t total = 0;
-  for (int s = 0; s < ns; ++s)
-    total += n_faces(s);
-  // Keep the buckets' memory from step to step, but forget cells the bodies have left.
-  if (grid_.size() > 16 * total + 1024)
+  const int no = n_obstacles(), ns = no + n_bodies();
+  // The obstacles (walls, barriers: many faces, most of them at rest) are binned with a
+  // slack and kept while no vertex has moved by more than it; the bodies every step.
+  // A face whose box, widened by the thickness (and the slack), covers a node's cell is
+  // a candidate: every face within the thickness of the node is one either way.
+  const double slack = 0.5 * cell_;
+  bool moved = binned_obstacle_x_.size() != std::size_t(no);
+  for (int o = 0; o < no && !moved; ++o)
+  {
+    moved = binned_obstacle_x_[o].size() != obstacle_x_[o].size();
+    for (std::size_t k = 0; k < obstacle_x_[o].size() && !moved; ++k)
+      moved = (obstacle_x_[o][k] - binned_obstacle_x_[o][k]).squaredNorm() > slack * slack;
+  }
+  if (moved)
+  {
+    obstacle_grid_.clear();
+    obstacle_large_faces_.clear();
+    for (int o = 0; o < no; ++o)
+      bin_surface(o, thickness_ + slack, obstacle_grid_, obstacle_large_faces_);
+    binned_obstacle_x_ = obstacle_x_;
+  }
+  // Keep the buckets' memory from step to step, but forget cells the bodies have left:
+  // clear when most cells went unused.
+  if (grid_.size() > 2 * used_cells_ + 1024)
     grid_.clear();
   for (auto& [key, list] : grid_)
     list.clear();
   large_faces_.clear();
-  for (int s = 0; s < ns; ++s)
-    for (int f = 0; f < n_faces(s); ++f)
+  used_cells_ = 0;
+  for (int s = no; s < ns; ++s)
+    used_cells_ += bin_surface(s, thickness_, grid_, large_faces_);
+}
+
+template <int dim>
+std::size_t ContactModel<dim>::bin_surface(int s, double widen, Grid& grid,
+                                           std::vector<std::pair<int, int>>& large) const
+{
+  std::size_t filled = 0;
+  for (int f = 0; f < n_faces(s); ++f)
+  {
+    const auto& fc = face(s, f);
+    Vector lo = vertex(s, fc[0]), hi = lo;
+    for (int k = 1; k < dim; ++k)
     {
-      const auto& fc = face(s, f);
-      Vector lo = vertex(s, fc[0]), hi = lo;
-      for (int k = 1; k < dim; ++k)
-      {
-        lo = lo.cwiseMin(vertex(s, fc[k]));
-        hi = hi.cwiseMax(vertex(s, fc[k]));
-      }
-      if (!lo.allFinite() || !hi.allFinite())
-        continue;
-      lo.array() -= thickness_;
-      hi.array() += thickness_;
-      std::array<long, dim> c0, c1;
-      double cells = 1; // double: a huge face must not overflow the count
-      for (int d = 0; d < dim; ++d)
-      {
-        c0[d] = long(std::floor(lo[d] / cell_));
-        c1[d] = long(std::floor(hi[d] / cell_));
-        cells *= double(c1[d] - c0[d] + 1);
-      }
-      if (cells > double(max_cells_per_face))
-      {
-        large_faces_.emplace_back(s, f);
-        continue;
-      }
-      std::array<long, dim> c = c0;
-      while (true)
-      {
-        Vector centre;
-        for (int d = 0; d < dim; ++d)
-          centre[d] = (c[d] + 0.5) * cell_;
-        grid_[cell_key(centre)].emplace_back(s, f);
-        int d = 0;
-        for (; d < dim; ++d)
-        {
-          if (++c[d] <= c1[d])
-            break;
-          c[d] = c0[d];
-        }
-        if (d == dim)
-          break;
-      }
+      lo = lo.cwiseMin(vertex(s, fc[k]));
+      hi = hi.cwiseMax(vertex(s, fc[k]));
     }
+    if (!lo.allFinite() || !hi.allFinite())
+      continue;
+    lo.array() -= widen;
+    hi.array() += widen;
+    std::array<long, dim> c0, c1;
+    double cells = 1; // double: a huge face must not overflow the count
+    for (int d = 0; d < dim; ++d)
+    {
+      c0[d] = long(std::floor(lo[d] / cell_));
+      c1[d] = long(std::floor(hi[d] / cell_));
+      cells *= double(c1[d] - c0[d] + 1);
+    }
+    if (cells > double(max_cells_per_face))
+    {
+      large.emplace_back(s, f);
+      continue;
+    }
+    std::array<long, dim> c = c0;
+    while (true)
+    {
+      Vector centre;
+      for (int d = 0; d < dim; ++d)
+        centre[d] = (c[d] + 0.5) * cell_;
+      auto& list = grid[cell_key(centre)];
+      filled += list.empty();
+      list.emplace_back(s, f);
+      int d = 0;
+      for (; d < dim; ++d)
+      {
+        if (++c[d] <= c1[d])
+          break;
+        c[d] = c0[d];
+      }
+      if (d == dim)
+        break;
+    }
+  }
+  return filled;
 }
 
 template <int dim>
@@ -352,12 +382,17 @@ void ContactModel<dim>::detect()
         bs.p = p;
       }
     };
-    const auto it = grid_.find(cell_key(x));
-    if (it != grid_.end())
-      for (const auto& [s, f] : it->second)
+    const auto key = cell_key(x);
+    for (const Grid* grid : {&obstacle_grid_, &grid_})
+    {
+      const auto it = grid->find(key);
+      if (it != grid->end())
+        for (const auto& [s, f] : it->second)
+          consider(s, f);
+    }
+    for (const auto* large : {&obstacle_large_faces_, &large_faces_})
+      for (const auto& [s, f] : *large)
         consider(s, f);
-    for (const auto& [s, f] : large_faces_)
-      consider(s, f);
     std::sort(touched.begin(), touched.end()); // a fixed order whatever the hashing
     for (int s : touched)
     {

@@ -91,6 +91,9 @@ public:
   /// Reactions on an obstacle's vertices (the impulse the obstacle takes up).
   const std::vector<Vector>& obstacle_forces(int o) const { return obstacles_[o].force; }
 
+  /// The obstacle's surface (its name and current vertices, where obstacle_forces act).
+  const sph::WallSurface<dim>& obstacle(int o) const { return *obstacles_[o].wall; }
+
   int n_bodies() const { return int(bodies_.size()); }
   int n_obstacles() const { return int(obstacles_.size()); }
   int n_contacts() const { return n_contacts_; }      ///< last compute()
@@ -149,8 +152,19 @@ private:
 
   // grid: hashed cell -> (surface, face); faces spanning too many cells are kept apart.
   // A hash collision only adds candidates, which the geometric test then rejects.
-  std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>> grid_;
+  using Grid = std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>>;
+  /// Bins surface s's faces, their boxes widened by `widen`; returns the cells it filled
+  /// first.
+  std::size_t bin_surface(int s, double widen, Grid& grid,
+                          std::vector<std::pair<int, int>>& large) const;
+  Grid grid_; ///< the bodies' faces, every step
   std::vector<std::pair<int, int>> large_faces_;
+  std::size_t used_cells_ = 0; ///< cells the last bin_faces() filled
+  /// The obstacles' faces, binned with a slack of half a cell and kept until one of
+  /// their vertices has moved by more (binned_obstacle_x_: where they were binned).
+  Grid obstacle_grid_;
+  std::vector<std::pair<int, int>> obstacle_large_faces_;
+  std::vector<std::vector<Vector>> binned_obstacle_x_;
 
   std::vector<Contact> contacts_;
   /// Tangential spring per live contact, keyed by (owner, node, partner).

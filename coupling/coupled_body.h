@@ -54,6 +54,9 @@ public:
   /// Largest elastic displacement of a skin node from its place in the moving frame, m
   /// (0 for rigid bodies).
   virtual double max_deflection() const { return 0; }
+  /// Elastic strain energy 1/2 q^T K q of the body's deformation, J (2D: J/m; 0 for
+  /// rigid bodies).
+  virtual double strain_energy() const { return 0; }
   /// Further named probe values a kind reports (e.g. a moving wall's force and torque),
   /// names with their unit as a suffix ("force_x_N").
   virtual std::vector<std::pair<std::string, double>> extra_probes() const { return {}; }

@@ -76,25 +76,44 @@ SkinOverlap<dim>::SkinOverlap(std::vector<Vector> nodes, std::vector<std::array<
 template <int dim>
 bool SkinOverlap<dim>::operator()(const Vector& x) const
 {
+  return near_face(x) || encloses(x);
+}
+
+template <int dim>
+bool SkinOverlap<dim>::near_face(const Vector& x) const
+{
   if ((x.array() < lower_.array()).any() || (x.array() > upper_.array()).any())
     return false;
-  double winding = 0;
   for (const auto& f : faces_)
   {
     if constexpr (dim == 2)
     {
       if (face_distance(x, nodes_[f[0]], nodes_[f[1]]) < margin_)
         return true;
+    }
+    else if (face_distance(x, nodes_[f[0]], nodes_[f[1]], nodes_[f[2]]) < margin_)
+      return true;
+  }
+  return false;
+}
+
+template <int dim>
+bool SkinOverlap<dim>::encloses(const Vector& x) const
+{
+  if (!closed_ || (x.array() < lower_.array()).any() || (x.array() > upper_.array()).any())
+    return false;
+  double winding = 0;
+  for (const auto& f : faces_)
+  {
+    if constexpr (dim == 2)
+    {
       const Vector a = nodes_[f[0]] - x, b = nodes_[f[1]] - x;
       winding += std::atan2(a[0] * b[1] - a[1] * b[0], a.dot(b)) / (2 * pi);
     }
     else
     {
-      const Vector &p = nodes_[f[0]], &q = nodes_[f[1]], &r = nodes_[f[2]];
-      if (face_distance(x, p, q, r) < margin_)
-        return true;
       // Solid angle of the triangle (Van Oosterom & Strackee 1983).
-      const Vector a = p - x, b = q - x, c = r - x;
+      const Vector a = nodes_[f[0]] - x, b = nodes_[f[1]] - x, c = nodes_[f[2]] - x;
       const double la = a.norm(), lb = b.norm(), lc = c.norm();
       winding += 2 *
                  std::atan2(a.dot(b.cross(c)),
@@ -102,7 +121,7 @@ bool SkinOverlap<dim>::operator()(const Vector& x) const
                  (4 * pi);
     }
   }
-  return closed_ && winding > 0.5;
+  return winding > 0.5;
 }
 
 template class SkinOverlap<2>;

@@ -20,6 +20,10 @@ public:
   SkinOverlap(std::vector<Vector> nodes, std::vector<std::array<int, dim>> faces, double margin);
   /// True if `x` lies inside the closed skin or within `margin` of a face.
   bool operator()(const Vector& x) const;
+  /// True if `x` lies within `margin` of a face.
+  bool near_face(const Vector& x) const;
+  /// True if the skin is closed and `x` lies inside it (winding number above 1/2).
+  bool encloses(const Vector& x) const;
   bool closed() const { return closed_; }
 
 private:

@@ -105,6 +105,15 @@ double MultibodyCoupledBody<dim>::max_deflection() const
   return largest;
 }
 
+template <int dim>
+double MultibodyCoupledBody<dim>::strain_energy() const
+{
+  double e = 0;
+  for (int i = 0; i < system_->n_bodies(); ++i)
+    e += system_->body(i).strain_energy();
+  return e;
+}
+
 template class MultibodyCoupledBody<2>;
 template class MultibodyCoupledBody<3>;
 } // namespace chipflex::coupling

@@ -44,6 +44,8 @@ public:
   /// Body 0's frame rotation and the largest elastic skin displacement of body 0.
   Eigen::Matrix<double, dim, dim> frame_rotation() const override;
   double max_deflection() const override;
+  /// Sum of the bodies' modal strain energies (mbs::FloatingFrameBody::strain_energy).
+  double strain_energy() const override;
   std::vector<double> state() const override { return system_->save_state(); }
   void restore(const std::vector<double>& state) override { system_->restore_state(state); }
 

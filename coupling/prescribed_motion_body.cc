@@ -21,7 +21,7 @@ PrescribedMotionBody<dim>::PrescribedMotionBody(std::vector<Vector> nodes,
 template <int dim>
 typename PrescribedMotionBody<dim>::Vector PrescribedMotionBody<dim>::probe_position() const
 {
-  return motion_.centre + motion_.velocity * time_;
+  return motion_.in_place ? motion_.centre : motion_.centre + motion_.velocity * time_;
 }
 
 template <int dim>
@@ -46,6 +46,11 @@ typename PrescribedMotionBody<dim>::Vector PrescribedMotionBody<dim>::spin(const
 template <int dim>
 void PrescribedMotionBody<dim>::skin_positions(std::vector<Vector>& x) const
 {
+  if (motion_.in_place)
+  {
+    x = reference_;
+    return;
+  }
   const Matrix r = frame_rotation();
   const Vector c = probe_position();
   x.resize(reference_.size());

@@ -7,7 +7,9 @@
 //
 //   x(t) = c(t) + R(omega t) (x0 - c0),   c(t) = c0 + v t,   x'(t) = v + omega a x (x - c(t))
 //
-// 2D: the axis is z, the angular speed counter-clockwise positive.
+// 2D: the axis is z, the angular speed counter-clockwise positive. With `in_place` the
+// vertices stay at x0 (the motion only sets their velocities, x'(t) = v + omega a x
+// (x0 - c(t))): exact for a surface the motion maps onto itself.
 
 #include "coupling/coupled_body.h"
 #include "mbs/skin_body.h"
@@ -25,6 +27,10 @@ struct PrescribedMotion
   Vector centre = Vector::Zero();                  ///< a point of the axis at t = 0, m
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ(); ///< rotation axis (3D), unit
   double angular_speed = 0;                        ///< rad/s, right-handed about the axis
+  /// The surface keeps its place and only its velocity follows the motion: a surface
+  /// that moves along itself (a turning surface of revolution about its axis, a belt),
+  /// given only where the fluid or the bodies meet it (a borehole wall beside a flute).
+  bool in_place = false;
 };
 
 template <int dim>

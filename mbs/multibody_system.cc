@@ -200,6 +200,11 @@ void MultibodySystem<dim>::step(double dt)
   if (!(dt > 0))
     throw InputError("MultibodySystem::step", "time step must be positive");
   setup();
+  if (nv_ == 0) // every body fixed (a clamped rigid body): nothing moves
+  {
+    time_ += dt;
+    return;
+  }
   if (!initialized_)
     initialize_accelerations();
   switch (options_.scheme)

@@ -202,7 +202,7 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
     lattice<dim>(b.min, b.max, origin, dp,
                  [&](const Vector& x)
                  {
-                   if (in_buffer(x))
+                   if (in_buffer(x) || (c.fluid_region && !c.fluid_region(x)))
                      return;
                    fluid_x.push_back(x);
                    fluid_v.push_back(c.initial_velocity);
@@ -224,6 +224,8 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
     lattice<dim>(z.box_min, z.box_max, origin, dp,
                  [&](const Vector& x)
                  {
+                   if (c.fluid_region && !c.fluid_region(x))
+                     return;
                    fluid_x.push_back(x);
                    Vector v = c.initial_velocity;
                    if (z.kind == OpenBoundaryKind::inlet)

@@ -8,6 +8,7 @@
 #include "sph/open_boundary.h"
 #include "sph/wall_surface.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -61,6 +62,10 @@ struct CaseDescription
   /// Inlets and outlets; build_fluid fills their buffer boxes with the fluid's lattice
   /// (fluid-block particles inside a buffer are replaced).
   std::vector<OpenBoundary<dim>> open_boundaries;
+  /// Where fluid may start: fluid-block and buffer lattice points for which it returns
+  /// false are left out (a duct whose section is not a box: a closed surface of the
+  /// fluid's region, e.g. a drill's flute). Empty: everywhere.
+  std::function<bool(const Eigen::Matrix<double, dim, 1>&)> fluid_region;
   /// The velocity every fluid block starts with, m/s.
   Eigen::Matrix<double, dim, 1> initial_velocity = Eigen::Matrix<double, dim, 1>::Zero();
   /// Start with the hydrostatic density of each block (no initial pressure wave).

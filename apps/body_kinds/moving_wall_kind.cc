@@ -33,6 +33,10 @@ public:
     keys.declare("surface group", "", "text", "Physical group of `surface`; empty: all.");
     keys.declare("flip normals", "false", "bool",
                  "Reverse the faces of `surface` (the fluid lies on the side of the normal).");
+    keys.declare("in place", "false", "bool",
+                 "The surface keeps its place, only its velocity follows the motion: for a "
+                 "surface the motion maps onto itself (a cylinder turning about its axis, "
+                 "a belt), which may then be given only where it meets the fluid.");
   }
 
   template <int dim>
@@ -73,6 +77,7 @@ public:
     coupling::PrescribedMotion<dim> motion;
     motion.velocity = p.velocity;
     motion.centre = p.position;
+    motion.in_place = keys.flag("in place");
     const double speed = p.angular_velocity.norm();
     motion.angular_speed = dim == 2 ? p.angular_velocity[2] : speed;
     if (dim == 3 && speed > 0)

@@ -41,6 +41,44 @@ TEST_CASE("a moving wall's skin moves rigidly with its prescribed velocity and s
     CHECK(((x_next[i] - x[i]) / dt - v[i]).norm() < 1e-5 * v[i].norm());
 }
 
+TEST_CASE("a wall turning in place keeps its vertices and moves them at omega x r")
+{
+  // A cylinder turning about its own axis maps onto itself: `in_place` leaves the
+  // vertices where they are and gives them the velocity omega a x (x - c), tangential to
+  // the cylinder (a borehole wall past a drill's flute); its torque about the axis is
+  // that of its forces.
+  using Vector = Eigen::Vector3d;
+  coupling::PrescribedMotion<3> motion;
+  motion.centre = Vector(0, 0, 0);
+  motion.axis = Vector(0, 0, 1);
+  motion.angular_speed = -133;
+  motion.in_place = true;
+  const double radius = 0.01;
+  std::vector<Vector> x0;
+  for (int k = 0; k < 5; ++k)
+    x0.push_back(radius * Vector(std::cos(0.3 * k), std::sin(0.3 * k), 0.002 * k));
+  coupling::PrescribedMotionBody<3> wall(x0, {{0, 1, 2}, {2, 3, 4}}, motion);
+  for (int k = 0; k < 100; ++k)
+    wall.advance(1e-4);
+  std::vector<Vector> x, v;
+  wall.skin_positions(x);
+  wall.skin_velocities(v);
+  for (int i = 0; i < 5; ++i)
+  {
+    CHECK((x[i] - x0[i]).norm() == 0);
+    const Vector expected = -133 * Vector(0, 0, 1).cross(x0[i]);
+    CHECK((v[i] - expected).norm() < 1e-12 * expected.norm());
+    CHECK(std::abs(v[i].dot(Vector(x0[i][0], x0[i][1], 0))) < 1e-15); // tangential
+  }
+  // A unit tangential force at every vertex: torque = n r about the axis.
+  std::vector<Vector> f;
+  for (const auto& p : x0)
+    f.push_back(Vector(-p[1], p[0], 0) / radius);
+  wall.set_skin_forces(f);
+  const auto probes = wall.extra_probes();
+  CHECK(std::abs(probes[3].second - 5 * radius) < 1e-15);
+}
+
 TEST_CASE("a paddle turning in a closed box: fluid momentum = drive + box impulse", "[coupling]")
 {
   using Vector = Eigen::Vector2d;

@@ -1,0 +1,49 @@
+#!/bin/sh
+# The drill-flute jamming case (docs/drill_flute.md): generates the flute's surfaces,
+# meshes and reduces the chip once, runs the rigid and the flexible chip variants of the
+# 3D case, writes per-chip CSVs and the drill's contact history, and draws
+# OUT/drill_flute.png.
+#
+#   cases/drill_flute/run_flute.sh OUT [END_TIME]
+#     END_TIME  simulated time in s (default: the case files' 0.02)
+#   Environment: CHIPFLEX (default build/bin/chipflex), THREADS (default 2),
+#   VARIANTS (default "rigid flexible"), DP (particle spacing, m; default the case's
+#   0.00075; the open boundaries' layers follow so that layers * dp stays 3 mm).
+set -e
+if [ $# -lt 1 ]; then
+  sed -n '2,12p' "$0"
+  exit 2
+fi
+here=$(cd "$(dirname "$0")" && pwd)
+repo=$(cd "$here/../.." && pwd)
+chipflex=${CHIPFLEX:-$repo/build/bin/chipflex}
+chipflex=$(cd "$(dirname "$chipflex")" && pwd)/$(basename "$chipflex")
+out=$1
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+cd "$out"
+# The flute of a D = 20 mm single-lip drill: 120-degree V, apex on the axis, a 30 mm
+# segment with the barrier at 20 mm (the case files' boxes and probes match these).
+python3 "$here/make_flute_geometry.py" --diameter 0.02 --flute-angle 120 --length 0.03 \
+  --barrier 0.02 --out "$out" > geometry.log
+if [ ! -f chip.h5 ]; then
+  # A ribbon chip, 10 x 2 x 0.1 mm, of 42CrMo4 steel (E 210 GPa, nu 0.3, rho 7850 kg/m^3).
+  "$chipflex" mesh chip --shape ribbon --length 0.01 --width 0.002 --thickness 0.0001 \
+    --size 0.0005 -o chip.msh > chip.log
+  "$chipflex" reduce chip.msh -o chip.h5 --E 2.1e11 --nu 0.3 --rho 7850 --modes 10 >> chip.log
+fi
+layers=""
+if [ -n "$DP" ]; then
+  layers=$(awk "BEGIN { printf \"%d\", 0.003 / $DP + 0.5 }")
+fi
+for v in ${VARIANTS:-rigid flexible}; do
+  case_file=$here/flute_3d_$v.prm
+  [ -f "$case_file" ] || { echo "no variant $v ($case_file)" >&2; exit 2; }
+  sed -e "${2:+s|^\(  set end time *=\).*|\1 $2|}" \
+      -e "${DP:+s|^\(  set particle spacing *=\).*|\1 $DP|}" \
+      -e "${layers:+s|^\(    set layers *=\).*|\1 $layers|}" "$case_file" > "flute_3d_$v.prm"
+  "$chipflex" run "flute_3d_$v.prm" --out "$v" --threads "${THREADS:-2}" > "$v.log" 2>&1 ||
+    { tail -3 "$v.log" >&2; exit 1; }
+  grep '^summary:' "$v.log" | sed "s|^summary:|summary: variant=$v|"
+done
+python3 "$here/plot_flute.py" "$out" ${VARIANTS:-rigid flexible}

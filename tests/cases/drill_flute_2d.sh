@@ -1,0 +1,39 @@
+#!/bin/sh
+# The 2D drill-flute case (cases/drill_flute/flute_2d.prm) for 0.02 s: the coolant carries
+# three rigid steel strips from the tip to the permeable barrier at x = 20 mm. Checks:
+#   - no chip passes the barrier: every chip's centre stays at least its half thickness
+#     (0.25 mm, less 0.05 mm for the contact overlap) before x = 20 mm, at every probe row;
+#   - the chips reach it and rest on it: every chip within 1.5 mm of it at the end, and the
+#     contact force on the barrier (along the flow) positive over the last third;
+#   - the pressure falls along the flow: p(tip) - p(top) > 0 over the last third;
+#   - mass is conserved through the channel: the outlet's mean mass flow over the last
+#     third within 15 % of the inlet's (the blocked chips still rearrange).
+# A barrier the chips slipped through, a contact reaction with the wrong sign or lost, a
+# pressure probe on the wrong side or an outlet that drains the channel fails it.
+#   usage: drill_flute_2d.sh CHIPFLEX
+chipflex=$1
+here=$(cd "$(dirname "$0")" && pwd)
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+sed 's|^\(  set end time *=\).*|\1 0.02|' "$here/../../cases/drill_flute/flute_2d.prm" > "$dir/flute_2d.prm"
+OMP_WAIT_POLICY=passive "$chipflex" run "$dir/flute_2d.prm" --out "$dir/out" --threads 1 > "$dir/log" 2>&1 ||
+  fail "the run stopped: $(tail -3 "$dir/log")"
+tail -1 "$dir/log"
+awk -F, -v barrier=0.02 -v half=0.00025 -v end=0.02 '
+  NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
+  { for (c = 1; c <= 3; ++c) { x = $col["chip" c "_x_m"]
+      if (x + half - 5e-5 > barrier) { printf "FAIL: chip%d at x = %.5f m at t = %s s, past the barrier\n", c, x, $1; bad = 1 }
+      last[c] = x }
+    if ($1 >= 2 * end / 3) { n++; force += $col["contact_wall_1_force_x_N"]
+      drop += $col["p_tip_Pa"] - $col["p_top_Pa"]; fin += $col["inlet_mass_flow"]; fout += $col["outlet_mass_flow"] } }
+  END { if (bad) exit 1
+        if (n == 0) { print "FAIL: no probe rows in the last third"; exit 1 }
+        for (c = 1; c <= 3; ++c) if (barrier - last[c] > 0.0015) { printf "FAIL: chip%d ends at x = %.5f m, not at the barrier\n", c, last[c]; exit 1 }
+        printf "chips at %.3f %.3f %.3f mm (barrier 20 mm); last third: barrier contact force %.2f N/m, pressure drop %.0f Pa, inflow %.3f outflow %.3f kg/(s m) (%+.1f %%)\n",
+               1e3 * last[1], 1e3 * last[2], 1e3 * last[3], force / n, drop / n, fin / n, fout / n, 100 * (fout / fin - 1)
+        if (!(force / n > 0)) { print "FAIL: no contact force on the barrier"; exit 1 }
+        if (!(drop / n > 0)) { print "FAIL: the pressure does not fall along the flow"; exit 1 }
+        if (fout / fin > 1.15 || fout / fin < 0.85) { print "FAIL: outflow differs from inflow by more than 15 %"; exit 1 } }
+' "$dir/out/probes.csv" || exit 1
+echo "ok: the chips stop at the barrier"
