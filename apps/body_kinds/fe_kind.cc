@@ -9,9 +9,9 @@
 // factorisations, so with `fe time step` = D > 0 the FE model steps on its own grid
 // 0, D, 2D, ... and the fluid sub-cycles inside each FE step: the step T -> T + D is taken
 // when the fluid reaches T, under the mean skin force of the fluid's steps in [T - D, T]
-// (the first one under the forces of the first fluid step), so the body receives the
-// fluid's impulse exactly, one FE step late. Meanwhile the skin moves on the cubic Hermite
-// curve through the FE states (u, v) at T and T + D: positions continuous and velocities
+// (the first one, before any such window, under the forces of the first fluid step), so
+// the body receives the fluid's impulse one FE step late. Meanwhile the skin moves on the cubic
+// Hermite curve through the FE states (u, v) at T and T + D: positions continuous and velocities
 // continuous across FE steps, the velocity the curve's derivative.
 
 #include "apps/body_kinds/body_kind.h"

@@ -3,6 +3,7 @@
 # dp 4 mm for 12 ms with the FE model sub-cycled (fe time step 0.2 ms, ~4 fluid steps per FE
 # step). A run stopped at 6 ms (inside an FE step) and restarted from its checkpoint must
 # reproduce the uninterrupted run's probes bitwise, and the gate must have moved downstream.
+# Bad keys stop the run with one line and status 2.
 #   usage: fe_body_restart.sh CHIPFLEX REPO
 chipflex=$1
 repo=$2
@@ -31,4 +32,12 @@ cmp -s "$dir/full/probes.csv" "$dir/parts/probes.csv" ||
 # The water pushes the gate's free end downstream (+x) by a fraction of a millimetre by 12 ms.
 dx=$(sed -n 's/.*max_dx_mm=\([0-9.eE+-]*\).*/\1/p' "$dir/full.log" | head -1)
 awk -v d="$dx" 'BEGIN { exit !(d > 0.01 && d < 5) }' || fail "free-end dx $dx mm after 12 ms"
+# Bad input: one line naming the case, the body and the problem, exit status 2.
+sed 's/^\(    set clamp group *=\).*/\1 nogroup/' "$dir/fe.prm" > "$dir/bad.prm"
+"$chipflex" run "$dir/bad.prm" --out "$dir/bad" > "$dir/bad.log" 2>&1
+[ $? -eq 2 ] || fail "a missing clamp group: exit status not 2"
+grep -q "body 1.*nogroup" "$dir/bad.log" || fail "the error does not name the group: $(cat "$dir/bad.log")"
+sed 's/^\(    set material model *=\).*/\1 neo-hooke\n    set plane stress = true/' "$dir/fe.prm" > "$dir/bad.prm"
+"$chipflex" run "$dir/bad.prm" --out "$dir/bad" > "$dir/bad.log" 2>&1
+[ $? -eq 2 ] || fail "neo-Hooke in plane stress: exit status not 2"
 echo "ok: fe gate restarted at 6 ms = uninterrupted run, bitwise (max dx $dx mm)"
