@@ -161,8 +161,8 @@ int plot_command(const Arguments& args)
   rms.precision(2);
   for (std::size_t r = 0; r < runs.size(); ++r)
   {
-    const auto e = DisplacementHistory::read_csv(displacement_file(runs[r]))
-                       .rms_error(experiment, t0, t1);
+    const auto e =
+        DisplacementHistory::read_csv(displacement_file(runs[r])).rms_error(experiment, t0, t1);
     rms << "rms: run=" << curves[r].label << " rms_dx_mm=" << e.rms_dx * 1e3
         << " rms_dy_mm=" << e.rms_dy * 1e3 << " frames=" << e.frames << "\n";
   }

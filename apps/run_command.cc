@@ -258,9 +258,8 @@ int run_command(const Arguments& args)
   std::cout << "finished at t = " << sim->time() << " s after " << sim->step_count() << " steps; "
             << particles.n_frames() << " frames in " << dir
             << "/particles.xdmf; lost_particles=" << sim->n_lost_particles()
-            << " peak_fluid_speed_m_s=" << sim->peak_fluid_speed()
-            << " (" << sim->peak_fluid_speed_where() << ")" << sim->flow_summary()
-            << std::endl;
+            << " peak_fluid_speed_m_s=" << sim->peak_fluid_speed() << " ("
+            << sim->peak_fluid_speed_where() << ")" << sim->flow_summary() << std::endl;
   return 0;
 }
 } // namespace chipflex::apps

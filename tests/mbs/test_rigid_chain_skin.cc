@@ -3,10 +3,10 @@
 // link); at dp 1 mm the elastic-gate fluid entered that wedge and was squeezed out at up to
 // 13 m/s. With rounded hinge ends every point where the fluid's boundary meets the link
 // (the wall's corners, the neighbour link's corners) stays on or inside the link's outline.
+#include "elastic_gate_chain.h"
 #include "mbs/multibody_system.h"
 #include "mbs/rigid_body.h"
 #include "mbs/rigid_chain.h"
-#include "elastic_gate_chain.h"
 
 #include <algorithm>
 #include <catch2/catch.hpp>

@@ -1,11 +1,11 @@
 // Rigid bodies with joints and torsion springs: pendulum periods (exact elliptic-integral
 // value), the seed paper's spring chains under a static tip force, checkpoints.
 #include "common/input_error.h"
+#include "elastic_gate_chain.h"
 #include "mbs/composite_skin.h"
 #include "mbs/multibody_system.h"
 #include "mbs/rigid_body.h"
 #include "mbs/rigid_chain.h"
-#include "elastic_gate_chain.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
