@@ -10,6 +10,7 @@
 #include "fem/gmsh_reader.h"
 #include "fem/nonlinear_elastic_body.h"
 #include "fem_test_support.h"
+#include "meshes/chip_mesher.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -306,4 +307,91 @@ TEST_CASE("nonlinear reduced cantilever against the full nonlinear FE model", "[
                        << " %");
     CHECK(error < 0.02);
   }
+}
+
+TEST_CASE("nonlinear reduced helical chip against the full nonlinear FE model in 3D",
+          "[fem][nonlinear][chip]")
+{
+  // A steel helical chip (one turn, curl radius 3 mm, pitch 2 mm, 2 x 0.5 mm section,
+  // quadratic hexahedra on the curved geometry), clamped at its start face and pulled along
+  // the helix axis at its end face by a dead load large enough that the linear answer is
+  // off by more than 5 %. Reduced: 6 modes + the static mode of that load + the modal
+  // derivatives of the first 5 modes, St Venant-Kirchhoff as the cubic polynomial; full: the
+  // St Venant-Kirchhoff FE model of the same mesh. Both are compared at the end face's mean
+  // displacement within 3 %.
+  meshes::ChipMeshSpec spec;
+  spec.shape = meshes::ChipMeshSpec::Shape::helical;
+  spec.width = 2e-3;
+  spec.thickness = 0.5e-3;
+  spec.curl_radius = 3e-3;
+  spec.pitch = 2e-3;
+  spec.turns = 1;
+  spec.size = 1e-3;
+  const std::string mesh_file = scratch("helical_chip_nonlinear.msh");
+  meshes::write_chip_mesh(spec, mesh_file);
+  Material steel;
+  steel.youngs_modulus = 2.1e11;
+  steel.poisson_ratio = 0.3;
+  steel.density = 7850;
+
+  ReductionSettings s;
+  s.mesh_file = mesh_file;
+  s.clamp_group = "start";
+  s.material = steel;
+  s.n_modes = 6;
+  s.static_modes = {"force:end:0,0,1"};
+  s.nonlinear = true;
+  s.derivative_modes = 5;
+  const ReducedBodyData reduced = reduce_body(s);
+  REQUIRE(reduced.nonlinear());
+  const PolynomialStiffness svk(reduced.stiffness_matrix, reduced.quadratic_stiffness,
+                                reduced.cubic_stiffness);
+  const int m = reduced.n_modes();
+
+  const GmshMeshData mesh = read_gmsh_mesh(mesh_file);
+  NonlinearElasticBody<3> full(mesh, steel, HyperelasticModel::st_venant_kirchhoff, 2, "start",
+                               MPI_COMM_WORLD);
+  const auto& end = reduced.node_sets.at("end");
+  const auto end_mean = [&](const Eigen::VectorXd& u)
+  {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const int node : end)
+      sum += u.segment<3>(3 * node);
+    return Eigen::Vector3d(sum / double(end.size()));
+  };
+  const LoadCase unit = LoadCase::parse("force:end:0,0,1", 3, "test");
+  const Eigen::VectorXd unit_modal =
+      reduced.psi.transpose() * full.body().to_nodal(full.body().load_vector(unit));
+  // The load whose linear answer moves the end by half the curl radius.
+  const Eigen::VectorXd q_unit = reduced.stiffness_matrix.ldlt().solve(unit_modal);
+  const double force = 0.5 * spec.curl_radius / end_mean(reduced.psi * q_unit).norm();
+  const Eigen::Vector3d u_linear = force * end_mean(reduced.psi * q_unit);
+
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(m), f(m);
+  Eigen::MatrixXd kt;
+  for (int step = 1; step <= 20; ++step) // reduced: Newton in 20 load steps
+  {
+    const Eigen::VectorXd load = (force * step / 20) * unit_modal;
+    for (int it = 0;; ++it)
+    {
+      REQUIRE(it < 50);
+      svk.evaluate(q, f, &kt);
+      const Eigen::VectorXd dq = kt.ldlt().solve(load - f);
+      q += dq;
+      if (dq.norm() <= 1e-12 * q.norm())
+        break;
+    }
+  }
+  const Eigen::Vector3d u_reduced = end_mean(reduced.psi * q);
+  const Eigen::Vector3d u_full = end_mean(
+      full.solve_static(LoadCase::parse("force:end:0,0," + std::to_string(force), 3, "test"), 20));
+  const double error = (u_reduced - u_full).norm() / u_full.norm();
+  const double nonlinearity = (u_linear - u_full).norm() / u_full.norm();
+  WARN("helical chip, end load " << force << " N (" << m << " reduced coordinates): end "
+                                 << "displacement reduced (" << u_reduced.transpose()
+                                 << "), full FE (" << u_full.transpose() << "), linear ("
+                                 << u_linear.transpose() << "); reduced vs full " << 100 * error
+                                 << " %, linear vs full " << 100 * nonlinearity << " %");
+  CHECK(nonlinearity > 0.05); // the load is large: a linear body would be off
+  CHECK(error < 0.03);
 }
