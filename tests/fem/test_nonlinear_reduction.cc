@@ -106,6 +106,24 @@ struct Beam
   }
 };
 
+/// Newton on the reduced static equilibrium f(q) = load with the polynomial's tangent,
+/// from the q given (the previous load step's answer).
+void solve_equilibrium(const PolynomialStiffness& svk, const Eigen::VectorXd& load,
+                       Eigen::VectorXd& q)
+{
+  Eigen::VectorXd f(q.size());
+  Eigen::MatrixXd kt;
+  for (int it = 0;; ++it)
+  {
+    REQUIRE(it < 50);
+    svk.evaluate(q, f, &kt);
+    const Eigen::VectorXd dq = kt.ldlt().solve(load - f);
+    q += dq;
+    if (dq.norm() <= 1e-12 * q.norm())
+      break;
+  }
+}
+
 /// Static equilibrium of the reduced body under a dead tip force (0, -p) shared equally by
 /// the tip nodes; returns the tip centre's displacement (x, y).
 Eigen::Vector2d reduced_tip_displacement(const ReducedBodyData& body, const Beam& beam,
@@ -125,8 +143,7 @@ Eigen::Vector2d reduced_tip_displacement(const ReducedBodyData& body, const Beam
         std::abs(body.nodes(centre, 1) - beam.thickness / 2))
       centre = node;
   }
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(m), f(m);
-  Eigen::MatrixXd kt;
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(m);
   double alpha = 0;
   out.clear();
   for (const double target : alphas)
@@ -135,15 +152,7 @@ Eigen::Vector2d reduced_tip_displacement(const ReducedBodyData& body, const Beam
     {
       alpha = std::min(target, alpha + 0.25);
       const Eigen::VectorXd load = alpha * beam.ei() / std::pow(beam.length, 2) * unit_load;
-      for (int it = 0;; ++it)
-      {
-        REQUIRE(it < 50);
-        svk.evaluate(q, f, &kt);
-        const Eigen::VectorXd dq = kt.ldlt().solve(load - f);
-        q += dq;
-        if (dq.norm() <= 1e-12 * q.norm())
-          break;
-      }
+      solve_equilibrium(svk, load, q);
     }
     out.push_back(body.psi.middleRows(2 * centre, 2) * q);
   }
@@ -223,20 +232,11 @@ TEST_CASE("nonlinear reduced 3D strip follows the elastica at P L^2/EI = 2", "[f
       centre = node;
   }
   const double ei = e * width * std::pow(thickness, 3) / 12, alpha = 2;
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(m), f(m);
-  Eigen::MatrixXd kt;
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(m);
   for (int step = 1; step <= 8; ++step)
   {
     const Eigen::VectorXd load = step / 8.0 * alpha * ei / (length * length) * unit_load;
-    for (int it = 0;; ++it)
-    {
-      REQUIRE(it < 50);
-      svk.evaluate(q, f, &kt);
-      const Eigen::VectorXd dq = kt.ldlt().solve(load - f);
-      q += dq;
-      if (dq.norm() <= 1e-12 * q.norm())
-        break;
-    }
+    solve_equilibrium(svk, load, q);
   }
   const Eigen::Vector3d tip_u = body.psi.middleRows(3 * centre, 3) * q;
   const auto ref = elastica(alpha);
@@ -277,8 +277,7 @@ TEST_CASE("nonlinear reduced cantilever against the full nonlinear FE model", "[
   const Eigen::VectorXd unit_modal =
       reduced.psi.transpose() * full.body().to_nodal(full.body().load_vector(unit));
 
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(m), f(m);
-  Eigen::MatrixXd kt;
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(m);
   double alpha = 0;
   for (const double target : {1., 2., 5., 10.})
   {
@@ -287,15 +286,7 @@ TEST_CASE("nonlinear reduced cantilever against the full nonlinear FE model", "[
     {
       alpha = std::min(target, alpha + 0.25);
       const Eigen::VectorXd load = alpha * beam.ei() / std::pow(beam.length, 2) * unit_modal;
-      for (int it = 0;; ++it)
-      {
-        REQUIRE(it < 50);
-        svk.evaluate(q, f, &kt);
-        const Eigen::VectorXd dq = kt.ldlt().solve(load - f);
-        q += dq;
-        if (dq.norm() <= 1e-12 * q.norm())
-          break;
-      }
+      solve_equilibrium(svk, load, q);
     }
     const Eigen::Vector2d u_reduced = reduced.psi.middleRows(2 * centre, 2) * q;
     const Eigen::VectorXd u_full = full.solve_static(
@@ -367,20 +358,11 @@ TEST_CASE("nonlinear reduced helical chip against the full nonlinear FE model in
   const double force = 0.5 * spec.curl_radius / end_mean(reduced.psi * q_unit).norm();
   const Eigen::Vector3d u_linear = force * end_mean(reduced.psi * q_unit);
 
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(m), f(m);
-  Eigen::MatrixXd kt;
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(m);
   for (int step = 1; step <= 20; ++step) // reduced: Newton in 20 load steps
   {
     const Eigen::VectorXd load = (force * step / 20) * unit_modal;
-    for (int it = 0;; ++it)
-    {
-      REQUIRE(it < 50);
-      svk.evaluate(q, f, &kt);
-      const Eigen::VectorXd dq = kt.ldlt().solve(load - f);
-      q += dq;
-      if (dq.norm() <= 1e-12 * q.norm())
-        break;
-    }
+    solve_equilibrium(svk, load, q);
   }
   const Eigen::Vector3d u_reduced = end_mean(reduced.psi * q);
   const Eigen::Vector3d u_full = end_mean(
