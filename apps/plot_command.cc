@@ -136,10 +136,12 @@ int plot_command(const Arguments& args)
   fs::create_directories(work);
 
   std::vector<Curve> curves;
+  std::vector<DisplacementHistory> histories;
   const char* run_colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
   for (std::size_t r = 0; r < runs.size(); ++r)
   {
-    const auto h = DisplacementHistory::read_csv(displacement_file(runs[r]));
+    histories.push_back(DisplacementHistory::read_csv(displacement_file(runs[r])));
+    const auto& h = histories.back();
     const std::string label = labels.empty() ? fs::path(runs[r]).filename().string() : labels[r];
     curves.push_back({label.empty() ? runs[r] : label,
                       write_table(h, (work / ("run" + std::to_string(r) + ".dat")).string()),
@@ -161,8 +163,7 @@ int plot_command(const Arguments& args)
   rms.precision(2);
   for (std::size_t r = 0; r < runs.size(); ++r)
   {
-    const auto e =
-        DisplacementHistory::read_csv(displacement_file(runs[r])).rms_error(experiment, t0, t1);
+    const auto e = histories[r].rms_error(experiment, t0, t1);
     rms << "rms: run=" << curves[r].label << " rms_dx_mm=" << e.rms_dx * 1e3
         << " rms_dy_mm=" << e.rms_dy * 1e3 << " frames=" << e.frames << "\n";
   }
