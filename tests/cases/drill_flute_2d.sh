@@ -1,5 +1,5 @@
 #!/bin/sh
-# The 2D drill-flute case (cases/drill_flute/flute_2d.prm) for 0.02 s: the coolant carries
+# The 2D drill-flute case (cases/drill_flute/flute_2d.prm) to its end, 0.03 s: the coolant carries
 # three rigid steel strips from the tip to the permeable barrier at x = 20 mm. Checks:
 #   - no chip passes the barrier: every chip's centre stays at least its half thickness
 #     (0.25 mm, less 0.05 mm for the contact overlap) before x = 20 mm, at every probe row;
@@ -7,7 +7,11 @@
 #     contact force on the barrier (along the flow) positive over the last third;
 #   - the pressure falls along the flow: p(tip) - p(top) > 0 over the last third;
 #   - mass is conserved through the channel: the outlet's mean mass flow over the last
-#     third within 15 % of the inlet's (the blocked chips still rearrange).
+#     third within 7 % of the inlet's. Until about 16 ms the channel behind the barrier
+#     empties and refills as the chips arrive (the outflow swings between 0.76 and 1.6
+#     times the inflow in 4 ms windows); from then on every 4 ms window is within 4 %. The
+#     test used to stop at 0.02 s, where that swing was still in its last third and the
+#     balance depended on the CPU (+20 % on one machine).
 # A barrier the chips slipped through, a contact reaction with the wrong sign or lost, a
 # pressure probe on the wrong side or an outlet that drains the channel fails it.
 #   usage: drill_flute_2d.sh CHIPFLEX
@@ -16,11 +20,11 @@ here=$(cd "$(dirname "$0")" && pwd)
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
-sed 's|^\(  set end time *=\).*|\1 0.02|' "$here/../../cases/drill_flute/flute_2d.prm" > "$dir/flute_2d.prm"
+cp "$here/../../cases/drill_flute/flute_2d.prm" "$dir/flute_2d.prm"
 OMP_WAIT_POLICY=passive "$chipflex" run "$dir/flute_2d.prm" --out "$dir/out" --threads 1 > "$dir/log" 2>&1 ||
   fail "the run stopped: $(tail -3 "$dir/log")"
 tail -1 "$dir/log"
-awk -F, -v barrier=0.02 -v half=0.00025 -v end=0.02 '
+awk -F, -v barrier=0.02 -v half=0.00025 -v end=0.03 '
   NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
   { for (c = 1; c <= 3; ++c) { x = $col["chip" c "_x_m"]
       if (x + half - 5e-5 > barrier) { printf "FAIL: chip%d at x = %.5f m at t = %s s, past the barrier\n", c, x, $1; bad = 1 }
@@ -34,6 +38,6 @@ awk -F, -v barrier=0.02 -v half=0.00025 -v end=0.02 '
                1e3 * last[1], 1e3 * last[2], 1e3 * last[3], force / n, drop / n, fin / n, fout / n, 100 * (fout / fin - 1)
         if (!(force / n > 0)) { print "FAIL: no contact force on the barrier"; exit 1 }
         if (!(drop / n > 0)) { print "FAIL: the pressure does not fall along the flow"; exit 1 }
-        if (fout / fin > 1.15 || fout / fin < 0.85) { print "FAIL: outflow differs from inflow by more than 15 %"; exit 1 } }
+        if (fout / fin > 1.07 || fout / fin < 0.93) { print "FAIL: outflow differs from inflow by more than 7 %"; exit 1 } }
 ' "$dir/out/probes.csv" || exit 1
 echo "ok: the chips stop at the barrier"

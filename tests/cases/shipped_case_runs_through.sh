@@ -7,13 +7,15 @@
 # out by the method (tensile pair binding in spray, a squeeze at a wall), not the flow. It holds at every force pass (peak_fluid_speed_m_s is the
 # largest speed of any fluid particle at any step), and at most a few particles may have
 # left the domain box.
-#   usage: shipped_case_runs_through.sh CHIPFLEX CASE.prm H_m [MAX_LOST]
+#   usage: shipped_case_runs_through.sh CHIPFLEX CASE.prm H_m [speed-bound|report-speed]
+#                                       [LOST_FRACTION] [END_TIME_s|case]
 #   CASE.prm may be 'elastic_gate:VARIANT:DP_MM' for cases/elastic_gate/run_benchmark.sh.
 chipflex=$1
 case_file=$2
 height=$3
 speed_check=${4:-speed-bound}
 lost_fraction=${5:-0.001}
+end_time=${6:-case}
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
@@ -27,7 +29,9 @@ elastic_gate:*)
   status=$(head -1 "$dir/$variant/summary.txt")
   ;;
 *)
-  "$chipflex" run "$case_file" --out "$dir/out" > "$dir/log" 2>&1 ||
+  set -- run "$case_file" --out "$dir/out"
+  [ "$end_time" = case ] || set -- "$@" --end-time "$end_time"
+  "$chipflex" "$@" > "$dir/log" 2>&1 ||
     fail "$case_file stopped: $(tail -3 "$dir/log")"
   status=$(head -1 "$dir/out/summary.txt")
   ;;
