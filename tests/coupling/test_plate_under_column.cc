@@ -39,16 +39,12 @@ fem::Material stiff_plate()
   return m;
 }
 
-/// The plate in its file's frame: x in [0, t] (x = 0 wetted), y in [0, L], clamp at y = 0.
-std::string plate_body_file()
+/// The plate meshed as `spec` (clamp at its long axis' minimum) and reduced: 8 modes plus
+/// the static mode of a pressure on its x = 0 face; returns the body file `name`.h5.
+std::string reduced_plate(meshes::BlockMeshSpec spec, const std::string& name)
 {
-  meshes::BlockMeshSpec spec;
-  spec.dim = 2;
-  spec.extent = {thickness, length, 0};
-  spec.long_axis = 1;
   spec.clamp_at_max = false;
-  spec.size = thickness / 4;
-  const std::string mesh = fem::testing::scratch("plate_under_column.msh");
+  const std::string mesh = fem::testing::scratch(name + ".msh");
   meshes::write_block_mesh(spec, mesh);
   fem::ReductionSettings s;
   s.mesh_file = mesh;
@@ -56,9 +52,20 @@ std::string plate_body_file()
   s.clamp_group = "clamp";
   s.n_modes = 8;
   s.static_modes = {"pressure:xmin"};
-  const std::string file = fem::testing::scratch("plate_under_column.h5");
+  const std::string file = fem::testing::scratch(name + ".h5");
   write_reduced_body(file, fem::reduce_body(s));
   return file;
+}
+
+/// The plate in its file's frame: x in [0, t] (x = 0 wetted), y in [0, L], clamp at y = 0.
+std::string plate_body_file()
+{
+  meshes::BlockMeshSpec spec;
+  spec.dim = 2;
+  spec.extent = {thickness, length, 0};
+  spec.long_axis = 1;
+  spec.size = thickness / 4;
+  return reduced_plate(spec, "plate_under_column");
 }
 
 /// Static x displacement of the tip (mean of the `tip` set) of the reduced body under
@@ -195,19 +202,8 @@ std::string plate_body_file_3d()
   spec.dim = 3;
   spec.extent = {thickness, width, length};
   spec.long_axis = 2;
-  spec.clamp_at_max = false;
   spec.size = thickness / 2;
-  const std::string mesh = fem::testing::scratch("plate_under_column_3d.msh");
-  meshes::write_block_mesh(spec, mesh);
-  fem::ReductionSettings s;
-  s.mesh_file = mesh;
-  s.material = stiff_plate();
-  s.clamp_group = "clamp";
-  s.n_modes = 8;
-  s.static_modes = {"pressure:xmin"};
-  const std::string file = fem::testing::scratch("plate_under_column_3d.h5");
-  write_reduced_body(file, fem::reduce_body(s));
-  return file;
+  return reduced_plate(spec, "plate_under_column_3d");
 }
 
 /// Static x displacement of the tip (mean of `tip`) under p(z) on the x = 0 face:
