@@ -80,6 +80,8 @@ std::vector<std::string> FluidSimulation<dim>::probe_columns() const
     c.push_back("outflow_particles");
   }
   c.push_back("lost_particles");
+  // The largest fluid speed at any step so far (every force pass, not only probe times).
+  c.push_back("peak_fluid_speed_m_s");
   return c;
 }
 
@@ -107,6 +109,7 @@ std::vector<double> FluidSimulation<dim>::probe_values() const
     v.push_back(double(fluid_->n_outflow()));
   }
   v.push_back(double(fluid_->lost_particles().size()));
+  v.push_back(fluid_->peak_fluid_speed());
   return v;
 }
 

@@ -1,14 +1,23 @@
 #!/bin/sh
-# A shipped case runs to its end with its fluid within a physical speed bound.
+# A shipped case runs to its end with its fluid within physical speed bounds.
 #
 # Water released from rest out of a column of height H falls at most sqrt(2 g H)
 # (Torricelli), and the front of Ritter's ideal dam-break solution runs at 2 sqrt(g H).
-# The bound is 2 sqrt(2 g H), 41 % above Ritter's front: a particle beyond it was thrown
-# out by the method (tensile pair binding in spray, a squeeze at a wall), not the flow. It holds at every force pass (peak_fluid_speed_m_s is the
-# largest speed of any fluid particle at any step), and at most a few particles may have
+# The flow bound is 2 sqrt(2 g H), 41 % above Ritter's front: a particle beyond it was
+# thrown out by the method (tensile pair binding in spray, a squeeze at a wall), not the
+# flow. It holds at every step (probes.csv's peak_fluid_speed_m_s is the largest speed of
+# any fluid particle at any step so far), for the whole run or, where a front meets a wall,
+# up to that impact (speed-bound-until:T_s). An impact is not bound by it: the line where
+# the front's free surface meets the wall rises at U / tan(theta), and the run-up jet with
+# it (Wagner; Peregrine 2003 reports wall jets of many times the incident speed); in the
+# 2D dam break a sheet of a hundred particles rises at 12.0 to 12.9 m/s whatever the time
+# step, c0 or viscosity (docs/sph.md, "Wall-impact jets"). From the impact on, the bound is
+# the weakly compressible limit, Mach 0.3 (0.3 c0): beyond it the model's density
+# varies by more than M^2/2 = 4.5 % and is no longer water (c0 is chosen for Mach 0.1 in
+# the flow). Every run is also held to that limit, and at most a few particles may have
 # left the domain box.
-#   usage: shipped_case_runs_through.sh CHIPFLEX CASE.prm H_m [speed-bound|report-speed]
-#                                       [LOST_FRACTION] [END_TIME_s|case]
+#   usage: shipped_case_runs_through.sh CHIPFLEX CASE.prm H_m
+#            [speed-bound|speed-bound-until:T_s] [LOST_FRACTION] [END_TIME_s|case]
 #   CASE.prm may be 'elastic_gate:VARIANT:DP_MM' for cases/elastic_gate/run_benchmark.sh.
 chipflex=$1
 case_file=$2
@@ -27,6 +36,7 @@ elastic_gate:*)
   CHIPFLEX=$chipflex "$here/../../cases/elastic_gate/run_benchmark.sh" "$dir" "$dp_mm" "$variant" \
     > "$dir/log" 2>&1 || fail "$case_file stopped: $(tail -3 "$dir/log")"
   status=$(head -1 "$dir/$variant/summary.txt")
+  probes=$dir/$variant/probes.csv
   ;;
 *)
   set -- run "$case_file" --out "$dir/out"
@@ -34,6 +44,7 @@ elastic_gate:*)
   "$chipflex" "$@" > "$dir/log" 2>&1 ||
     fail "$case_file stopped: $(tail -3 "$dir/log")"
   status=$(head -1 "$dir/out/summary.txt")
+  probes=$dir/out/probes.csv
   ;;
 esac
 echo "$status"
@@ -46,11 +57,29 @@ fluid=$(cat "$dir"/log "$dir"/*.log 2>/dev/null | grep -o 'SPH fluid: [0-9]*' | 
 [ -n "$fluid" ] || fail "the log does not give the fluid particle count"
 awk "BEGIN { exit !($lost <= $lost_fraction * $fluid) }" ||
   fail "$lost of $fluid fluid particles left the domain (more than $lost_fraction of them)"
-if awk "BEGIN { exit !($peak < $bound) }"; then
+c0=$(cat "$dir"/log "$dir"/*.log 2>/dev/null | grep -o 'c0 = [0-9.e+-]* m/s' | head -1 | cut -d' ' -f3)
+[ -n "$c0" ] || fail "the log does not give c0"
+mach_bound=$(awk "BEGIN { print 0.3 * $c0 }")
+case $speed_check in
+speed-bound) until=end ;;
+speed-bound-until:*) until=${speed_check#speed-bound-until:} ;;
+*) fail "unknown speed check '$speed_check'" ;;
+esac
+if [ "$until" = end ]; then
+  awk "BEGIN { exit !($peak < $bound) }" ||
+    fail "a fluid particle reached $peak m/s, above 2 sqrt(2 g H) = $bound m/s"
   echo "peak fluid speed $peak m/s below 2 sqrt(2 g H) = $bound m/s"
-elif [ "$speed_check" = report-speed ]; then
-  echo "note: peak fluid speed $peak m/s above 2 sqrt(2 g H) = $bound m/s (reported, not required)"
 else
-  fail "a fluid particle reached $peak m/s, above 2 sqrt(2 g H) = $bound m/s"
+  # The running peak at the last probe row up to the impact.
+  before=$(awk -F, -v until="$until" '
+    NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "peak_fluid_speed_m_s") c = i; next }
+    c && $1 <= until + 0 { p = $c } END { print p }' "$probes")
+  [ -n "$before" ] || fail "$probes has no peak_fluid_speed_m_s up to t = $until s"
+  awk "BEGIN { exit !($before < $bound) }" ||
+    fail "a fluid particle reached $before m/s by t = $until s, above 2 sqrt(2 g H) = $bound m/s"
+  echo "peak fluid speed $before m/s up to the impact (t = $until s) below 2 sqrt(2 g H) = $bound m/s"
 fi
+awk "BEGIN { exit !($peak < $mach_bound) }" ||
+  fail "a fluid particle reached $peak m/s, above Mach 0.3 = $mach_bound m/s"
+echo "peak fluid speed $peak m/s over the run below Mach 0.3 = $mach_bound m/s (c0 $c0 m/s)"
 echo "ok: $case_file ran to its end, $lost of $fluid fluid particles lost"

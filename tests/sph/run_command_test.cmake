@@ -40,7 +40,7 @@ foreach(f particles.xdmf particles/frame_000000.h5 probes.csv checkpoint.h5)
 endforeach()
 file(STRINGS ${WORK}/out/probes.csv rows)
 list(GET rows 0 header)
-if(NOT header STREQUAL "time_s,p_bottom_Pa,h_middle_m,lost_particles")
+if(NOT header STREQUAL "time_s,p_bottom_Pa,h_middle_m,lost_particles,peak_fluid_speed_m_s")
   message(FATAL_ERROR "probes.csv header: ${header}")
 endif()
 execute_process(COMMAND ${CHIPFLEX} run ${WORK}/small.prm --out ${WORK}/out --threads 2
