@@ -6,8 +6,9 @@
 # 45 mm deep, started at its draft with the water around it. Checked through the whole
 # `chipflex run` path (case file, body registry, 3D coupling): the mean draft over
 # 0.2 ... 0.4 s (water level, unchanged, minus the box bottom) within 2 % of 15 mm, and the
-# box upright and centred. A wall that let particles through, a lost or doubled force or a
-# wrong mass would move the draft by more than that. The run stops at 0.4 s of the case's
+# box upright and centred, and the fluid below 2 sqrt(2 g H) at every step. A wall that
+# let particles through, a lost or doubled force or a wrong mass would move the draft by
+# more than that. The run stops at 0.4 s of the case's
 # 0.6 s (-0.14 % there, 2026-12-03), to keep the test under 1.5 minutes on 2 cores.
 #   usage: floating_box_3d.sh CHIPFLEX
 chipflex=$1
@@ -34,4 +35,7 @@ awk -F, -v level=0.045 -v half=0.015 -v expected=0.015 '
         if (worst > 0.05) { print "FAIL: the box tipped"; exit 1 }
         if (drift > 0.003) { print "FAIL: the box drifted off the basin centre"; exit 1 } }' \
   "$dir/out/probes.csv" || exit 1
+# The water around the box is nearly at rest: its speed stays below the flow bound for the
+# basin's depth, 45 mm, at every step.
+"$here/../cases/check_peak_speed.sh" "$dir/out" "$dir/log" 0.045 || exit 1
 echo "ok"
