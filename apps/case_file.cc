@@ -72,10 +72,12 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
 
   prm.enter_subsection("time");
   prm.declare_entry("end time", "1", Double(0), "Simulated time, s.");
-  prm.declare_entry("scheme", "verlet", Selection("verlet|symplectic|position verlet"),
+  prm.declare_entry("scheme", "automatic", Selection("automatic|verlet|symplectic|position verlet"),
                     "verlet (Euler every `verlet euler every` steps), symplectic (two force "
                     "passes per step) or position verlet (the same drift-kick-drift step "
-                    "with one pass; docs/sph.md).");
+                    "with one pass; docs/sph.md). automatic: position verlet for a case with "
+                    "bodies (the coupling's momentum exchange is exact only with the "
+                    "symplectic schemes), verlet for a fluid alone.");
   prm.declare_entry("cfl", "0.2", Double(0), "Courant number on the CFL and force limits, -.");
   prm.declare_entry("verlet euler every", "40", Integer(1), "Verlet: an Euler step every N steps.");
   prm.declare_entry("minimum time step", "1e-9", Double(0),
@@ -629,6 +631,11 @@ CaseFile read_case_file(const std::string& path)
       fill(prm, c.case_2d, path);
     else
       fill(prm, c.case_3d, path);
+    prm.enter_subsection("time");
+    const bool automatic_scheme = prm.get("scheme") == "automatic";
+    prm.leave_subsection();
+    if (automatic_scheme && n_case_bodies(prm, c.body_subsections) > 0)
+      c.case_2d.fluid.scheme = c.case_3d.fluid.scheme = sph::TimeScheme::position_verlet;
     c.end_time = c.dimension == 2 ? c.case_2d.end_time : c.case_3d.end_time;
     c.frame_interval = c.dimension == 2 ? c.case_2d.output_interval : c.case_3d.output_interval;
     prm.enter_subsection("output");

@@ -6,6 +6,7 @@
 #include "coupling/fluid_overlap.h"
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -324,12 +325,23 @@ std::string CoupledSimulation<dim>::finish(const std::string& output_directory) 
       output.commit();
     }
     line << "summary: body=" << body.name << " kind=" << body.body->kind();
+    // Magnitudes, not signed values: a body that moved only towards -y (a sinking
+    // sphere) must not report 0.
     Vector largest = Vector::Zero();
+    double largest_norm = 0;
     for (const auto& s : h)
+    {
+      double norm2 = 0;
       for (int d = 0; d < dim; ++d)
-        largest[d] = std::max(largest[d], s[1 + d]);
+      {
+        largest[d] = std::max(largest[d], std::abs(s[1 + d]));
+        norm2 += s[1 + d] * s[1 + d];
+      }
+      largest_norm = std::max(largest_norm, std::sqrt(norm2));
+    }
+    line << " max_displacement_mm=" << largest_norm * 1e3;
     for (int d = 0; d < dim; ++d)
-      line << " max_d" << axis_name[d] << "_mm=" << largest[d] * 1e3;
+      line << " max_abs_d" << axis_name[d] << "_mm=" << largest[d] * 1e3;
     line << " dp_mm=" << fluid_.description().fluid.particle_spacing * 1e3
          << " particles=" << cosim_->fluid().n_particles()
          << " lost_particles=" << n_lost_particles()

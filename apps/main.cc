@@ -3,9 +3,11 @@
 #include "apps/commands.h"
 #include "common/input_error.h"
 
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <iostream>
+#include <unistd.h>
 
 namespace
 {
@@ -31,6 +33,22 @@ const Subcommand subcommands[] = {
     {"export", "export a body as an FMI 2.0 FMU or as SID", chipflex::apps::export_command},
 };
 
+/// OpenMP threads that wait at a barrier spin by default (GNU libgomp spins for about
+/// 300,000 iterations before it sleeps). On a machine that other processes keep busy, a
+/// spinning thread takes the core from the thread that the barrier waits for, and a run
+/// on 2 busy cores took 10 times its idle time (docs/performance.md, "A busy machine").
+/// Waiting passively costs little on an idle machine, so chipflex asks for it unless the
+/// user has chosen a policy. The OpenMP runtime reads OMP_WAIT_POLICY when it is loaded,
+/// before main(), so the process starts itself again with the variable set.
+void wait_passively_at_barriers(char** argv)
+{
+  if (std::getenv("OMP_WAIT_POLICY"))
+    return; // the user's choice stands
+  setenv("OMP_WAIT_POLICY", "passive", 1);
+  execv("/proc/self/exe", argv);
+  // Only reached when the exec fails (no /proc): run on with the runtime's default.
+}
+
 void print_usage(std::ostream& out)
 {
   out << "usage: chipflex SUBCOMMAND [options]   (chipflex SUBCOMMAND --help for details)\n\n"
@@ -42,6 +60,7 @@ void print_usage(std::ostream& out)
 
 int main(int argc, char** argv)
 {
+  wait_passively_at_barriers(argv);
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h"))
   {
     print_usage(argc < 2 ? std::cerr : std::cout);
