@@ -150,6 +150,12 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
 
   // Open boundaries (sph/open_boundary.h, docs/sph.md "Open boundaries").
   prm.enter_subsection("open boundaries");
+  prm.declare_entry("tear warning fraction", "0.05", Double(0),
+                    "An internal flow holds its volume: when the fluid particles in the domain "
+                    "fall more than this fraction below their number at the start (the "
+                    "outlets taking out more than the inlets bring, a void opening), the run "
+                    "says so in the log and in summary.txt (`continuity:` line, torn=yes). "
+                    ">= 1: off (a tank that drains on purpose).");
   for (const char* zone : {"inlet", "outlet"})
   {
     const bool inlet = std::string(zone) == "inlet";
@@ -640,6 +646,12 @@ CaseFile read_case_file(const std::string& path)
     c.frame_interval = c.dimension == 2 ? c.case_2d.output_interval : c.case_3d.output_interval;
     prm.enter_subsection("output");
     c.probe_interval = prm.get_double("probe interval");
+    prm.leave_subsection();
+    const bool open =
+        c.dimension == 2 ? !c.case_2d.open_boundaries.empty() : !c.case_3d.open_boundaries.empty();
+    prm.enter_subsection("open boundaries");
+    if (open)
+      c.tear_warning_fraction = prm.get_double("tear warning fraction");
     prm.leave_subsection();
   }
   catch (const InputError& e)

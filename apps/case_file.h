@@ -27,6 +27,9 @@ struct CaseFile
   sph::CaseDescription<2> case_2d;
   sph::CaseDescription<3> case_3d;
   int body_subsections = 0; ///< highest N of the file's `subsection body N`
+  /// `open boundaries/tear warning fraction` (apps/fluid_continuity.h); with no open
+  /// boundary the fluid cannot leave, and the check is off.
+  double tear_warning_fraction = 1;
   /// The parsed file (for subsections that other layers read, e.g. bodies).
   std::shared_ptr<dealii::ParameterHandler> parameters;
 };

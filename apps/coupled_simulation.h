@@ -39,6 +39,7 @@ public:
   void save(Hdf5File& file) const override;
   void load(const Hdf5File& file) override;
   std::string summary() const override;
+  std::size_t n_fluid_particles() const override { return fluid_.n_fluid_particles(); }
   std::size_t n_lost_particles() const override { return fluid_.n_lost_particles(); }
   std::string describe_lost_particle(std::size_t k) const override
   {

@@ -30,6 +30,7 @@ public:
   void save(Hdf5File& file) const override;
   void load(const Hdf5File& file) override;
   std::string summary() const override;
+  std::size_t n_fluid_particles() const override { return fluid_->n_fluid(); }
   std::size_t n_lost_particles() const override { return fluid_->lost_particles().size(); }
   std::string describe_lost_particle(std::size_t k) const override
   {

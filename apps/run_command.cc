@@ -15,6 +15,7 @@
 #include "apps/command_line.h"
 #include "apps/commands.h"
 #include "apps/coupled_simulation.h"
+#include "apps/fluid_continuity.h"
 #include "apps/fluid_simulation.h"
 #include "apps/probe_output.h"
 #include "apps/progress_meter.h"
@@ -59,7 +60,8 @@ struct Cadence
   double next_frame = 0, next_probe = 0, next_checkpoint = 0;
 };
 
-void write_checkpoint(const std::string& path, const Simulation& sim, const Cadence& cadence)
+void write_checkpoint(const std::string& path, const Simulation& sim, const Cadence& cadence,
+                      const FluidContinuityCheck& continuity)
 {
   AtomicOutput out(path);
   {
@@ -70,6 +72,7 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const Cade
     h5.write_attribute("/run", "next_frame", cadence.next_frame);
     h5.write_attribute("/run", "next_probe", cadence.next_probe);
     h5.write_attribute("/run", "next_checkpoint", cadence.next_checkpoint);
+    continuity.save(h5, "/run");
     sim.save(h5);
   }
   out.commit();
@@ -78,7 +81,8 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const Cade
 /// DIR/summary.txt: a status line (status=finished|stopped, reason="..." when stopped,
 /// time, steps, frames), then the simulation's result lines. Returns the text.
 std::string write_summary(const std::string& dir, const Simulation& sim, std::size_t frames,
-                          const std::string& stop_reason)
+                          const std::string& stop_reason, const FluidContinuityCheck& continuity,
+                          bool open_boundaries)
 {
   std::ostringstream s;
   s.precision(9);
@@ -95,6 +99,8 @@ std::string write_summary(const std::string& dir, const Simulation& sim, std::si
   s << " t_s=" << sim.time() << " steps=" << sim.step_count() << " frames=" << frames
     << " lost_particles=" << sim.n_lost_particles()
     << " peak_fluid_speed_m_s=" << sim.peak_fluid_speed() << sim.flow_summary() << "\n";
+  if (open_boundaries)
+    s << continuity.summary_line() << "\n";
   const std::string results = sim.finish(dir);
   if (!results.empty())
     s << results << "\n";
@@ -193,6 +199,13 @@ int run_command(const Arguments& args)
     cadence.next_checkpoint = next_after(sim->time(), checkpoint_every);
   }
 
+  FluidContinuityCheck continuity(case_file.tear_warning_fraction);
+  const bool open_boundaries = case_file.dimension == 2
+                                   ? !case_file.case_2d.open_boundaries.empty()
+                                   : !case_file.case_3d.open_boundaries.empty();
+  if (cl.has("--restart"))
+    continuity.load(Hdf5File(cl.get("--restart"), Hdf5File::Mode::read), "/run");
+  continuity.update(sim->time(), sim->n_fluid_particles());
   ProgressMeter progress(sim->time(), end_time);
   std::size_t lost_reported = sim->n_lost_particles();
   const auto report_lost = [&]
@@ -207,6 +220,9 @@ int run_command(const Arguments& args)
     {
       sim->advance();
       report_lost();
+      const std::string tearing = continuity.update(sim->time(), sim->n_fluid_particles());
+      if (!tearing.empty())
+        std::cout << tearing << std::endl;
       const double t = sim->time();
       if (t >= cadence.next_probe)
       {
@@ -226,7 +242,7 @@ int run_command(const Arguments& args)
         // probes.csv first: a run killed after this checkpoint resumes from rows that
         // reach its time (ProbeOutput::resume keeps the rows up to the restart time).
         probes.flush();
-        write_checkpoint(checkpoint_path, *sim, cadence);
+        write_checkpoint(checkpoint_path, *sim, cadence, continuity);
       }
       progress.update(t, sim->step_count());
     }
@@ -243,7 +259,9 @@ int run_command(const Arguments& args)
       if (sim->time() > particles.last_time())
         particles.write(sim->time(), sim->frame());
       probes.flush();
-      std::cout << write_summary(dir, *sim, particles.n_frames(), e.what()) << std::flush;
+      std::cout << write_summary(dir, *sim, particles.n_frames(), e.what(), continuity,
+                                 open_boundaries)
+                << std::flush;
     }
     catch (const std::exception& w)
     {
@@ -254,7 +272,8 @@ int run_command(const Arguments& args)
   }
   progress.finish(sim->time(), sim->step_count());
   probes.flush();
-  std::cout << write_summary(dir, *sim, particles.n_frames(), "") << std::flush;
+  std::cout << write_summary(dir, *sim, particles.n_frames(), "", continuity, open_boundaries)
+            << std::flush;
   std::cout << "finished at t = " << sim->time() << " s after " << sim->step_count() << " steps; "
             << particles.n_frames() << " frames in " << dir
             << "/particles.xdmf; lost_particles=" << sim->n_lost_particles()

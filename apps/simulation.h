@@ -32,6 +32,8 @@ public:
   /// Complete state into / from an open checkpoint file (each part in its own group).
   virtual void save(Hdf5File& file) const = 0;
   virtual void load(const Hdf5File& file) = 0;
+  /// Fluid particles in the domain now (not the open boundaries' buffers).
+  virtual std::size_t n_fluid_particles() const = 0;
   /// Fluid particles removed so far (they left the domain box or turned non-finite).
   virtual std::size_t n_lost_particles() const = 0;
   /// One log line on the k-th removal (time, step, particle id, position, cause).
