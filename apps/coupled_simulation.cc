@@ -15,8 +15,10 @@ namespace chipflex::apps
 {
 namespace
 {
-/// Probe samples closer than this are not stored (the CSV stays ~4000 rows for a
-/// 0.4 s run whatever the particle spacing).
+/// The probe histories are sampled at the multiples of this interval, interpolated
+/// linearly between the two fluid steps around each: the CSV has the same times
+/// whatever the particle spacing and time step (4000 rows for a 0.4 s run), so runs can
+/// be compared row by row.
 constexpr double sample_interval = 1e-4; // s
 constexpr const char* axis_name[3] = {"x", "y", "z"};
 
@@ -68,6 +70,7 @@ CoupledSimulation<dim>::CoupledSimulation(const sph::CaseDescription<dim>& fluid
     reference_skins_.emplace_back();
     b.body->skin().skin_positions(reference_skins_.back());
     histories_.emplace_back();
+    last_step_.emplace_back();
   }
   if (contact.enabled)
     cosim_->enable_contact(contact.parameters);
@@ -99,14 +102,29 @@ void CoupledSimulation<dim>::record()
   for (std::size_t b = 0; b < case_.bodies.size(); ++b)
   {
     auto& h = histories_[b];
-    if (!h.empty() && t - h.back()[0] < sample_interval * (1 - 1e-9))
-      continue;
     const Vector u = case_.bodies[b].probe_position() - probe_start_[b];
-    Sample s;
-    s[0] = t;
+    Sample now;
+    now[0] = t;
     for (int d = 0; d < dim; ++d)
-      s[1 + d] = u[d];
-    h.push_back(s);
+      now[1 + d] = u[d];
+    auto& last = last_step_[b];
+    if (h.empty())
+      h.push_back(now); // t = 0
+    else
+    {
+      // Every sample time passed in this step, from the one after the last row on.
+      for (long long k = std::llround(h.back()[0] / sample_interval) + 1;
+           k * sample_interval <= t * (1 + 1e-12); ++k)
+      {
+        const double tk = k * sample_interval, w = (tk - last[0]) / (t - last[0]);
+        Sample s;
+        s[0] = tk;
+        for (int d = 0; d < dim; ++d)
+          s[1 + d] = last[1 + d] + w * (now[1 + d] - last[1 + d]);
+        h.push_back(s);
+      }
+    }
+    last = now;
   }
 }
 
@@ -266,6 +284,15 @@ void CoupledSimulation<dim>::load(const Hdf5File& file)
       std::copy_n(&rows[(1 + dim) * i], 1 + dim, s.begin());
       histories_[b].push_back(s);
     }
+  }
+  // The step before the checkpoint's time is not needed: the next sample lies after it,
+  // between the checkpoint's state (the one just loaded) and the next step.
+  for (std::size_t b = 0; b < case_.bodies.size(); ++b)
+  {
+    const Vector u = case_.bodies[b].probe_position() - probe_start_[b];
+    last_step_[b][0] = time();
+    for (int d = 0; d < dim; ++d)
+      last_step_[b][1 + d] = u[d];
   }
   skins_.resume(time());
   restored_wall_seconds_ = file.read_double_attribute("/probes", "wall_seconds");

@@ -62,6 +62,7 @@ private:
   std::unique_ptr<coupling::CoSimulation<dim>> cosim_;
   std::vector<Vector> probe_start_;
   std::vector<std::vector<Sample>> histories_;
+  std::vector<Sample> last_step_; ///< per body: the probe at the last step, for interpolation
   std::vector<std::vector<Vector>> reference_skins_; ///< skin nodes at t = 0
   mutable SurfaceOutput<dim> skins_;
   /// The axis of the walls' contact torque probes (contact/torque axis).
