@@ -156,6 +156,12 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
                     "outlets taking out more than the inlets bring, a void opening), the run "
                     "says so in the log and in summary.txt (`continuity:` line, torn=yes). "
                     ">= 1: off (a tank that drains on purpose).");
+  prm.declare_entry("watched frequencies", "", Anything(),
+                    "Frequencies the case is meant to resolve (a forcing, a vortex shedding, an "
+                    "expected body response), Hz, comma-separated. `chipflex run` warns when "
+                    "the channel's acoustic frequency c0 / (4 L) lies within a factor of 3 of "
+                    "one of them or of a flexible body's first natural frequency (docs/sph.md, "
+                    "\"Choosing c0 for channels\").");
   for (const char* zone : {"inlet", "outlet"})
   {
     const bool inlet = std::string(zone) == "inlet";
@@ -652,6 +658,13 @@ CaseFile read_case_file(const std::string& path)
     prm.enter_subsection("open boundaries");
     if (open)
       c.tear_warning_fraction = prm.get_double("tear warning fraction");
+    for (double f : numbers("open boundaries/watched frequencies", prm.get("watched frequencies")))
+    {
+      if (!(f > 0))
+        throw InputError("open boundaries/watched frequencies",
+                         "'" + prm.get("watched frequencies") + "': frequencies must be positive");
+      c.watched_frequencies.push_back(f);
+    }
     prm.leave_subsection();
   }
   catch (const InputError& e)

@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace dealii
 {
@@ -30,6 +31,8 @@ struct CaseFile
   /// `open boundaries/tear warning fraction` (apps/fluid_continuity.h); with no open
   /// boundary the fluid cannot leave, and the check is off.
   double tear_warning_fraction = 1;
+  /// `open boundaries/watched frequencies`, Hz (apps/channel_acoustics.h).
+  std::vector<double> watched_frequencies;
   /// The parsed file (for subsections that other layers read, e.g. bodies).
   std::shared_ptr<dealii::ParameterHandler> parameters;
 };

@@ -378,6 +378,17 @@ std::string CoupledSimulation<dim>::finish(const std::string& output_directory) 
   return line.str();
 }
 
+template <int dim>
+std::vector<std::pair<std::string, double>> CoupledSimulation<dim>::natural_frequencies() const
+{
+  std::vector<std::pair<std::string, double>> f;
+  for (const auto& b : case_.bodies)
+    if (b.body->natural_frequency_hz() > 0)
+      f.emplace_back("body " + b.name + "'s first natural frequency",
+                     b.body->natural_frequency_hz());
+  return f;
+}
+
 template class CoupledSimulation<2>;
 template class CoupledSimulation<3>;
 } // namespace chipflex::apps

@@ -40,6 +40,8 @@ public:
   void load(const Hdf5File& file) override;
   std::string summary() const override;
   std::size_t n_fluid_particles() const override { return fluid_.n_fluid_particles(); }
+  double speed_of_sound() const override { return fluid_.speed_of_sound(); }
+  std::vector<std::pair<std::string, double>> natural_frequencies() const override;
   std::size_t n_lost_particles() const override { return fluid_.n_lost_particles(); }
   std::string describe_lost_particle(std::size_t k) const override
   {

@@ -31,6 +31,7 @@ public:
   void load(const Hdf5File& file) override;
   std::string summary() const override;
   std::size_t n_fluid_particles() const override { return fluid_->n_fluid(); }
+  double speed_of_sound() const override { return fluid_->parameters().speed_of_sound; }
   std::size_t n_lost_particles() const override { return fluid_->lost_particles().size(); }
   std::string describe_lost_particle(std::size_t k) const override
   {

@@ -12,6 +12,7 @@
 // times) is saved in the checkpoint's /run group beside the simulation's own groups.
 
 #include "apps/case_file.h"
+#include "apps/channel_acoustics.h"
 #include "apps/command_line.h"
 #include "apps/commands.h"
 #include "apps/coupled_simulation.h"
@@ -173,6 +174,15 @@ int run_command(const Arguments& args)
 
   auto sim = make_simulation(case_file, dir);
   std::cout << sim->summary() << std::endl;
+  {
+    auto frequencies = sim->natural_frequencies();
+    for (double f : case_file.watched_frequencies)
+      frequencies.emplace_back("the watched frequency", f);
+    const double length = case_file.dimension == 2 ? channel_length(case_file.case_2d)
+                                                   : channel_length(case_file.case_3d);
+    for (const auto& line : acoustic_warnings(sim->speed_of_sound(), length, frequencies))
+      std::cout << line << std::endl;
+  }
   ParticleOutput particles(dir);
   ProbeOutput probes(dir + "/probes.csv", sim->probe_columns());
   Cadence cadence;

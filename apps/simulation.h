@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace chipflex
@@ -32,6 +33,11 @@ public:
   /// Complete state into / from an open checkpoint file (each part in its own group).
   virtual void save(Hdf5File& file) const = 0;
   virtual void load(const Hdf5File& file) = 0;
+  /// The fluid's artificial speed of sound c0 (derived by the case builder when the case
+  /// leaves it at 0), m/s.
+  virtual double speed_of_sound() const = 0;
+  /// The bodies' lowest natural frequencies that are known, ("body NAME", Hz).
+  virtual std::vector<std::pair<std::string, double>> natural_frequencies() const { return {}; }
   /// Fluid particles in the domain now (not the open boundaries' buffers).
   virtual std::size_t n_fluid_particles() const = 0;
   /// Fluid particles removed so far (they left the domain box or turned non-finite).

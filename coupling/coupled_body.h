@@ -57,6 +57,9 @@ public:
   /// Elastic strain energy 1/2 q^T K q of the body's deformation, J (2D: J/m; 0 for
   /// rigid bodies).
   virtual double strain_energy() const { return 0; }
+  /// The body's lowest natural frequency, Hz, where the kind knows it (a reduced body's
+  /// first normal mode); 0: unknown or rigid. Used to warn of channel acoustics near it.
+  virtual double natural_frequency_hz() const { return 0; }
   /// Further named probe values a kind reports (e.g. a moving wall's force and torque),
   /// names with their unit as a suffix ("force_x_N").
   virtual std::vector<std::pair<std::string, double>> extra_probes() const { return {}; }

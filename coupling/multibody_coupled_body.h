@@ -49,6 +49,10 @@ public:
   std::vector<double> state() const override { return system_->save_state(); }
   void restore(const std::vector<double>& state) override { system_->restore_state(state); }
 
+  double natural_frequency_hz() const override { return natural_frequency_hz_; }
+  /// Set by the kind that knows it (the flexible kind, from its body file).
+  void set_natural_frequency_hz(double hz) { natural_frequency_hz_ = hz; }
+
   mbs::MultibodySystem<dim>& system() { return *system_; }
   const mbs::MultibodySystem<dim>& system() const { return *system_; }
   long steps() const { return steps_; }
@@ -58,6 +62,7 @@ private:
   std::unique_ptr<mbs::MultibodySystem<dim>> system_;
   std::unique_ptr<mbs::SkinBody<dim>> owned_skin_;
   mbs::SkinBody<dim>* skin_;
+  double natural_frequency_hz_ = 0;
   double max_step_;
   Probe probe_;
   long steps_ = 0;

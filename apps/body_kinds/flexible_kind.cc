@@ -72,7 +72,15 @@ public:
     place_body(*body, context.placement);
     auto* skin = body.get();
     system->add_body(std::move(body));
-    return std::make_unique<coupling::MultibodyCoupledBody<dim>>(
+    // The lowest normal mode kept (static correction modes and modal derivatives are
+    // not natural modes).
+    double first_frequency = 0;
+    const int kept = modes < 0 ? data.n_modes() : modes;
+    for (int k = 0; k < kept && k < int(data.mode_kinds.size()); ++k)
+      if (data.mode_kinds[k] == "normal" && data.frequencies_hz[k] > 0 &&
+          (first_frequency == 0 || data.frequencies_hz[k] < first_frequency))
+        first_frequency = data.frequencies_hz[k];
+    auto coupled = std::make_unique<coupling::MultibodyCoupledBody<dim>>(
         "flexible", std::move(system), *skin, context.max_step,
         [probe](const mbs::MultibodySystem<dim>& s)
         {
@@ -83,6 +91,8 @@ public:
             sum += s.body(0).node_position(n);
           return Vector(sum / double(probe.size()));
         });
+    coupled->set_natural_frequency_hz(first_frequency);
+    return coupled;
   }
 };
 

@@ -5,7 +5,8 @@
 #  2. a run restarted from a checkpoint (written after creations and removals) ends with
 #     the same probe history as the uninterrupted one, to the last digit;
 #  3. bad open-boundary keys give one line naming the key and exit status 2;
-#  4. the continuity check: the steady channel is not torn, a channel that drains is.
+#  4. the continuity check: the steady channel is not torn, a channel that drains is;
+#  5. the channel-acoustics warning for a watched frequency near c0 / (4 L).
 #   usage: open_boundary_run.sh CHIPFLEX SOURCE_DIR
 chipflex=$1
 case_file=$2/cases/channel_2d.prm
@@ -52,6 +53,19 @@ grep -q "restarted from" "$dir/restart.log" || fail "restart did not say so"
 cmp -s "$dir/full/probes.csv" "$dir/part/probes.csv" ||
   fail "restarted run differs: $(tail -1 "$dir/full/probes.csv") / $(tail -1 "$dir/part/probes.csv")"
 echo "ok: restart with open boundaries is bitwise: $(tail -1 "$dir/part/probes.csv")"
+
+# Channel acoustics: c0 = 4 m/s over L = 0.1 m rings at c0 / (4 L) = 10 Hz; a watched
+# frequency within a factor of 3 of it draws a warning, one further away does not.
+for f in 25 40; do
+  sed "s/^subsection open boundaries$/subsection open boundaries\n  set watched frequencies = $f/" \
+    "$case_file" > "$dir/watch_$f.prm"
+  "$chipflex" run "$dir/watch_$f.prm" --out "$dir/watch_$f" --threads 1 --end-time 0.001 \
+    > "$dir/watch_$f.log" 2>&1 || fail "watched frequency $f Hz: $(tail -2 "$dir/watch_$f.log")"
+done
+grep -q "warning: the channel's acoustic frequency c0 / (4 L) = 10 Hz.* 25 Hz" "$dir/watch_25.log" ||
+  fail "no acoustic warning for 25 Hz against 10 Hz"
+! grep -q "acoustic" "$dir/watch_40.log" || fail "an acoustic warning for 40 Hz against 10 Hz"
+echo "ok: $(grep "acoustic frequency" "$dir/watch_25.log")"
 
 sed 's/set velocity  = 0.1/set velocity  = 0.1\n    set flow rate = 0.002/' "$case_file" > "$dir/both.prm"
 "$chipflex" run "$dir/both.prm" --out "$dir/both" > "$dir/both.out" 2> "$dir/both.err"
