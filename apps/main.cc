@@ -2,12 +2,11 @@
 
 #include "apps/commands.h"
 #include "common/input_error.h"
+#include "common/openmp_waiting.h"
 
-#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <iostream>
-#include <unistd.h>
 
 namespace
 {
@@ -33,25 +32,6 @@ const Subcommand subcommands[] = {
     {"export", "export a body as an FMI 2.0 FMU or as SID", chipflex::apps::export_command},
 };
 
-/// OpenMP threads that wait at a barrier spin by default (GNU libgomp: 300,000 iterations
-/// before it sleeps). On a machine that other processes keep busy, a spinning thread takes
-/// the core from the thread the barrier waits for: a gate run on 2 cores beside 2 other
-/// CPU-bound processes took 11 times its idle time. Waiting passively (OMP_WAIT_POLICY=
-/// passive) cured that but cost 10-30 % on an idle machine, where a short spin catches
-/// the next parallel region; 1,000 iterations keep the idle speed and take 1.5 times the
-/// idle time beside 2 busy processes (docs/performance.md, "A busy machine"). The
-/// runtime reads its settings when it is loaded, before main(), so the process starts
-/// itself again with GOMP_SPINCOUNT set, unless the user has chosen a wait policy or a
-/// spin count.
-void spin_briefly_at_barriers(char** argv)
-{
-  if (std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT"))
-    return; // the user's choice stands
-  setenv("GOMP_SPINCOUNT", "1000", 1);
-  execv("/proc/self/exe", argv);
-  // Only reached when the exec fails (no /proc): run on with the runtime's default.
-}
-
 void print_usage(std::ostream& out)
 {
   out << "usage: chipflex SUBCOMMAND [options]   (chipflex SUBCOMMAND --help for details)\n\n"
@@ -63,7 +43,7 @@ void print_usage(std::ostream& out)
 
 int main(int argc, char** argv)
 {
-  spin_briefly_at_barriers(argv);
+  chipflex::spin_briefly_at_barriers(argv); // common/openmp_waiting.h
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h"))
   {
     print_usage(argc < 2 ? std::cerr : std::cout);
