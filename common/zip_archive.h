@@ -1,10 +1,8 @@
 #pragma once
-// Zip archives (PKWARE APPNOTE 6.3: local file headers, central directory, end record),
-// the container of FMI 2.0 FMUs. Writing stores the entries uncompressed (method 0) with
-// their CRC-32, a fixed 1980-01-01 time stamp and in the order given, so the same
-// entries always give the same bytes. Reading takes stored (0) and deflated (8) entries,
-// the latter through zlib's raw inflate, and checks every entry's CRC-32 and size. No
-// Zip64 (entries and archives below 4 GiB), no encryption, no multi-disk archives.
+// Zip archives, the container of FMI 2.0 FMUs, through libzip. Writing stores the entries
+// uncompressed, in the order given, with a fixed 1980-01-01 00:00 time stamp and rw-r--r--
+// Unix attributes, so the same entries always give the same bytes. Reading takes what
+// libzip reads (stored and deflated entries, Zip64) and checks every entry's CRC-32.
 
 #include <string>
 #include <vector>
@@ -17,12 +15,9 @@ struct ZipEntry
   std::string bytes; ///< the uncompressed content
 };
 
-/// CRC-32 (ISO 3309, the zip and PNG polynomial) of a byte string.
-unsigned long crc32_of(const std::string& bytes);
-
 /// Writes the entries as a stored zip archive atomically (temporary file, then rename);
-/// throws InputError for a name that is empty, absolute or contains "..", or data too
-/// large for a plain zip.
+/// throws InputError for no entries, a name that is empty, absolute, contains ".." or
+/// repeats an earlier one, or an archive libzip cannot write.
 void write_zip(const std::string& path, const std::vector<ZipEntry>& entries);
 
 /// Reads every file entry of a zip archive (folders, i.e. names ending in '/', are left

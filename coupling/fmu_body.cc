@@ -1,8 +1,9 @@
 #include "coupling/fmu_body.h"
 
+#include "common/fmi2_interface.h"
+#include "common/fmi2_model_description.h"
 #include "common/input_error.h"
 #include "common/zip_archive.h"
-#include "fmu/fmi2_interface.h"
 
 #include <cmath>
 #include <cstdarg>
@@ -10,92 +11,13 @@
 #include <cstring>
 #include <dlfcn.h>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
-#include <map>
-#include <regex>
 
 namespace chipflex::coupling
 {
 namespace
 {
 using Vector = Eigen::Vector2d;
-
-/// What the model description says: GUID, identifier, variables by name.
-struct ModelDescription
-{
-  std::string guid, model_identifier, version;
-  bool co_simulation = false;
-  struct Variable
-  {
-    fmi2ValueReference vr = 0;
-    std::string type; ///< Real, Integer, Boolean, String, Enumeration
-    std::string start;
-  };
-  std::map<std::string, Variable> variables;
-};
-
-std::string xml_unescape(std::string s)
-{
-  const std::pair<const char*, const char*> entities[] = {
-      {"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&apos;", "'"}, {"&amp;", "&"}};
-  for (const auto& [from, to] : entities)
-    for (std::size_t at = 0; (at = s.find(from, at)) != std::string::npos; at += std::strlen(to))
-      s.replace(at, std::strlen(from), to);
-  return s;
-}
-
-std::string attribute(const std::string& tag, const std::string& name)
-{
-  std::smatch m;
-  if (std::regex_search(tag, m, std::regex("\\s" + name + "\\s*=\\s*\"([^\"]*)\"")))
-    return xml_unescape(m[1]);
-  return {};
-}
-
-ModelDescription read_model_description(const std::string& path, const std::string& fmu)
-{
-  std::ifstream in(path);
-  if (!in)
-    throw InputError(fmu, "no modelDescription.xml in the FMU");
-  const std::string xml(std::istreambuf_iterator<char>(in), {});
-  ModelDescription md;
-  const auto root = xml.find("<fmiModelDescription");
-  if (root == std::string::npos)
-    throw InputError(fmu, "modelDescription.xml has no fmiModelDescription element");
-  const std::string root_tag = xml.substr(root, xml.find('>', root) - root);
-  md.version = attribute(root_tag, "fmiVersion");
-  md.guid = attribute(root_tag, "guid");
-  const auto cs = xml.find("<CoSimulation");
-  if (cs != std::string::npos)
-  {
-    md.co_simulation = true;
-    md.model_identifier = attribute(xml.substr(cs, xml.find('>', cs) - cs), "modelIdentifier");
-  }
-  // Each <ScalarVariable ...> ... </ScalarVariable>: attributes in any order.
-  for (std::size_t at = 0; (at = xml.find("<ScalarVariable", at)) != std::string::npos;)
-  {
-    const std::size_t end = xml.find("</ScalarVariable>", at);
-    if (end == std::string::npos)
-      throw InputError(fmu, "modelDescription.xml: unterminated ScalarVariable");
-    const std::string block = xml.substr(at, end - at);
-    const std::string tag = block.substr(0, block.find('>'));
-    ModelDescription::Variable v;
-    v.vr = static_cast<fmi2ValueReference>(std::stoul("0" + attribute(tag, "valueReference")));
-    std::smatch m;
-    const std::string body = block.substr(tag.size());
-    if (std::regex_search(body, m,
-                          std::regex("<(Real|Integer|Boolean|String|Enumeration)\\b([^>]*)")))
-    {
-      v.type = m[1];
-      v.start = attribute(" " + std::string(m[2]), "start");
-    }
-    md.variables[attribute(tag, "name")] = v;
-    at = end;
-  }
-  return md;
-}
 
 void logger(fmi2ComponentEnvironment environment, fmi2String, fmi2Status status, fmi2String,
             fmi2String format, ...)
@@ -230,15 +152,15 @@ private:
     throw InputError(fmu_, message);
   }
 
-  const ModelDescription::Variable* find(const std::string& name, const char* type) const
+  const Fmi2ScalarVariable* find(const std::string& name, const char* type) const
   {
-    const auto it = md_.variables.find(name);
-    return it != md_.variables.end() && it->second.type == type ? &it->second : nullptr;
+    const Fmi2ScalarVariable* v = md_.find(name);
+    return v && v->type == type ? v : nullptr;
   }
   fmi2ValueReference need(const std::string& name, const char* type) const
   {
     if (const auto* v = find(name, type))
-      return v->vr;
+      return v->value_reference;
     throw InputError(fmu_, "the FMU has no " + std::string(type) + " variable '" + name +
                                "' (an fmu body needs the skin variables of "
                                "docs/export_fmu_sid.md)");
@@ -247,18 +169,22 @@ private:
   void set_real(const std::string& name, double value)
   {
     if (const auto* v = find(name, "Real"))
-      check(fmi_.SetReal(c_, &v->vr, 1, &value), "fmi2SetReal");
+      check(fmi_.SetReal(c_, &v->value_reference, 1, &value), "fmi2SetReal");
   }
 
   void load(const FmuBodySettings& d, const Vector& gravity)
   {
     extract_zip(fmu_, folder_);
-    md_ = read_model_description(folder_ + "/modelDescription.xml", fmu_);
-    if (md_.version != "2.0")
-      throw InputError(fmu_, "FMI version '" + md_.version + "', an fmu body needs FMI 2.0");
-    if (!md_.co_simulation || md_.model_identifier.empty())
-      throw InputError(fmu_, "not a co-simulation FMU (no <CoSimulation modelIdentifier>)");
-    const std::string so = folder_ + "/binaries/linux64/" + md_.model_identifier + ".so";
+    const std::string description = folder_ + "/modelDescription.xml";
+    if (!std::filesystem::exists(description))
+      throw InputError(fmu_, "no modelDescription.xml in the FMU");
+    md_ = read_fmi2_model_description(description, fmu_ + ": modelDescription.xml");
+    if (md_.fmi_version != "2.0")
+      throw InputError(fmu_, "FMI version '" + md_.fmi_version + "', an fmu body needs FMI 2.0");
+    if (!md_.co_simulation)
+      throw InputError(fmu_, "not a co-simulation FMU (no <CoSimulation>)");
+    const std::string so =
+        folder_ + "/binaries/linux64/" + md_.co_simulation->model_identifier + ".so";
     library_ = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!library_)
       throw InputError(fmu_, std::string("cannot load its library: ") + dlerror());
@@ -323,7 +249,7 @@ private:
     if (const auto* v = find("clamped", "Boolean"))
     {
       const fmi2Boolean b = d.clamped ? fmi2True : fmi2False;
-      check(fmi_.SetBoolean(c_, &v->vr, 1, &b), "fmi2SetBoolean");
+      check(fmi_.SetBoolean(c_, &v->value_reference, 1, &b), "fmi2SetBoolean");
     }
     // max step 0 = one body step per fluid step: an internal step no fluid step exceeds.
     set_real("step_size", d.max_step > 0 ? d.max_step : 1e30);
@@ -335,7 +261,7 @@ private:
                         : (d.rayleigh_mass > 0 || d.rayleigh_stiffness > 0) ? 1
                                                                             : 0;
     if (const auto* v = find("damping", "Integer"))
-      check(fmi_.SetInteger(c_, &v->vr, 1, &damping), "fmi2SetInteger");
+      check(fmi_.SetInteger(c_, &v->value_reference, 1, &damping), "fmi2SetInteger");
     else if (damping != 0)
       throw InputError(fmu_, "the FMU has no 'damping' parameter for the case's damping");
     set_real("rayleigh_alpha", d.rayleigh_mass);
@@ -409,7 +335,7 @@ private:
   }
 
   std::string fmu_, name_, folder_;
-  ModelDescription md_;
+  Fmi2ModelDescription md_;
   void* library_ = nullptr;
   Functions fmi_{};
   fmi2CallbackFunctions callbacks_{};

@@ -10,8 +10,8 @@
 // the integrator cannot take returns fmi2Discard and leaves the instance at the last
 // communication point (the state before the step), so an importer may retry smaller.
 
+#include "common/fmi2_interface.h"
 #include "fmu/body_variables.h"
-#include "fmu/fmi2_interface.h"
 
 #include <memory>
 #include <string>

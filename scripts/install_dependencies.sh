@@ -2,13 +2,16 @@
 # Installs chipflex's build and run dependencies from Debian 12's packages (as root).
 # OpenBLAS is installed deliberately: through Debian's alternatives it replaces the
 # reference BLAS under MUMPS and makes the factorisations ~3.5x faster (docs/performance.md).
-# zlib1g-dev: zip archives (FMUs; common/zip_archive.cc). python3-h5py: tests/apps opens the run outputs with it (ParaView's python3-paraview does
-# more, but is too large to install here; the test uses it where present).
+# libzip-dev, libpugixml-dev: FMUs (zip archives, common/zip_archive.cc; modelDescription.xml,
+# common/fmi2_model_description.cc). python3-h5py: tests/apps opens the run outputs with it
+# (ParaView's python3-paraview does more, but is too large to install here; the test uses it
+# where present).
 set -euo pipefail
 packages=(
   cmake g++ make pkg-config
   libdeal.ii-dev petsc-dev slepc-dev libhdf5-openmpi-dev libeigen3-dev
-  gmsh libgmsh-dev catch2 openmpi-bin libopenblas0-pthread gnuplot-nox python3-h5py zlib1g-dev
+  gmsh libgmsh-dev catch2 openmpi-bin libopenblas0-pthread gnuplot-nox python3-h5py
+  libzip-dev libpugixml-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -5,9 +5,6 @@
 #include <cstdarg>
 #include <cstdio>
 #include <dlfcn.h>
-#include <fstream>
-#include <iterator>
-#include <regex>
 #include <stdexcept>
 
 namespace chipflex::test
@@ -23,14 +20,6 @@ void logger(fmi2ComponentEnvironment, fmi2String, fmi2Status status, fmi2String,
   std::vsnprintf(text, sizeof text, format, args);
   va_end(args);
   logged().push_back({status, text});
-}
-
-std::string attribute(const std::string& xml, const std::string& name)
-{
-  std::smatch m;
-  if (!std::regex_search(xml, m, std::regex("\\b" + name + "=\"([^\"]*)\"")))
-    throw std::runtime_error("modelDescription.xml has no " + name);
-  return m[1];
 }
 } // namespace
 
@@ -49,16 +38,11 @@ const fmi2CallbackFunctions& test_callbacks()
 LoadedFmu::LoadedFmu(const std::string& fmu, const std::string& folder) : folder_(folder)
 {
   extract_zip(fmu, folder);
-  std::ifstream in(folder + "/modelDescription.xml");
-  xml_.assign(std::istreambuf_iterator<char>(in), {});
-  guid_ = attribute(xml_, "guid");
-  model_identifier_ = attribute(xml_, "modelIdentifier");
-  const std::regex variable("<ScalarVariable name=\"([^\"]*)\" valueReference=\"([0-9]+)\"");
-  for (auto it = std::sregex_iterator(xml_.begin(), xml_.end(), variable);
-       it != std::sregex_iterator(); ++it)
-    vrs_[(*it)[1]] = static_cast<fmi2ValueReference>(std::stoul((*it)[2]));
+  md_ = read_fmi2_model_description(folder + "/modelDescription.xml");
+  if (!md_.co_simulation)
+    throw std::runtime_error(fmu + ": not a co-simulation FMU");
 
-  const std::string so = folder + "/binaries/linux64/" + model_identifier_ + ".so";
+  const std::string so = folder + "/binaries/linux64/" + model_identifier() + ".so";
   library_ = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!library_)
     throw std::runtime_error("dlopen " + so + ": " + dlerror());
@@ -101,9 +85,8 @@ LoadedFmu::~LoadedFmu()
 
 fmi2ValueReference LoadedFmu::vr(const std::string& name) const
 {
-  const auto it = vrs_.find(name);
-  if (it == vrs_.end())
-    throw std::runtime_error("the FMU has no variable '" + name + "'");
-  return it->second;
+  if (const Fmi2ScalarVariable* v = md_.find(name))
+    return v->value_reference;
+  throw std::runtime_error("the FMU has no variable '" + name + "'");
 }
 } // namespace chipflex::test

@@ -2,12 +2,13 @@
 // Test importer of FMI 2.0 co-simulation FMUs, written as an importer would: unpack the
 // zip, read modelDescription.xml (GUID, modelIdentifier, variable names -> value
 // references), dlopen binaries/linux64/<modelIdentifier>.so and look up the fmi2*
-// functions by name. Knows nothing of chipflex's FMU code (it includes only the FMI
-// declarations), so it checks the FMU from outside.
+// functions by name. Knows nothing of chipflex's FMU code (it uses only the FMI
+// declarations and the model-description reader of common/), so it checks the FMU from
+// outside.
 
-#include "fmu/fmi2_interface.h"
+#include "common/fmi2_interface.h"
+#include "common/fmi2_model_description.h"
 
-#include <map>
 #include <string>
 #include <vector>
 
@@ -50,18 +51,18 @@ public:
   LoadedFmu& operator=(const LoadedFmu&) = delete;
 
   const Fmi2Functions& fmi() const { return fmi_; }
-  const std::string& guid() const { return guid_; }
-  const std::string& model_identifier() const { return model_identifier_; }
+  const std::string& guid() const { return md_.guid; }
+  const std::string& model_identifier() const { return md_.co_simulation->model_identifier; }
   std::string resource_uri() const { return "file://" + folder_ + "/resources"; }
   const std::string& folder() const { return folder_; }
   /// Value reference of a variable by name; throws for an unknown name.
   fmi2ValueReference vr(const std::string& name) const;
-  bool has(const std::string& name) const { return vrs_.count(name) > 0; }
-  const std::string& model_description() const { return xml_; }
+  bool has(const std::string& name) const { return md_.find(name) != nullptr; }
+  const Fmi2ModelDescription& model_description() const { return md_; }
 
 private:
-  std::string folder_, xml_, guid_, model_identifier_;
-  std::map<std::string, fmi2ValueReference> vrs_;
+  std::string folder_;
+  Fmi2ModelDescription md_;
   void* library_ = nullptr;
   Fmi2Functions fmi_{};
 };

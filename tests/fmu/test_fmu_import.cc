@@ -329,6 +329,21 @@ TEST_CASE("Bad input to the FMU gives FMI status codes and a logged message", "[
   const auto last_message = []
   { return logged().empty() ? std::string() : logged().back().message; };
 
+  // What the exported model description promises, as an importer's XML parser reads it.
+  const Fmi2ModelDescription& md = f.model_description();
+  CHECK(md.fmi_version == "2.0");
+  REQUIRE(md.co_simulation);
+  CHECK(md.co_simulation->can_get_and_set_fmu_state);
+  CHECK(md.co_simulation->can_serialize_fmu_state);
+  CHECK(md.co_simulation->can_handle_variable_communication_step_size);
+  REQUIRE(md.find("clamped"));
+  CHECK(md.find("clamped")->type == "Boolean");
+  CHECK(md.find("clamped")->causality == "parameter");
+  CHECK(md.find("clamped")->variability == "fixed");
+  REQUIRE(md.find("q[0]"));
+  CHECK(md.find("q[0]")->causality == "output");
+  CHECK_FALSE(md.find("q[0]")->start);
+
   // Instantiation: wrong GUID, model exchange, a resource folder with a broken body file.
   logged().clear();
   CHECK(fmi.Instantiate("x", fmi2CoSimulation, "{wrong}", f.resource_uri().c_str(),
