@@ -1,5 +1,7 @@
-// `chipflex info BODY.h5 [--json]`: what a body file holds, for people and for scripts.
+// `chipflex info BODY.h5 [--json] [--xdmf OUT.xdmf]`: what a body file holds, for people
+// and for scripts, and its mesh with the mode shapes for ParaView.
 
+#include "apps/body_xdmf.h"
 #include "apps/command_line.h"
 #include "apps/commands.h"
 #include "apps/json_value.h"
@@ -96,17 +98,30 @@ void print_text(const std::string& path, const ReducedBodyData& b)
 
 int info_command(const Arguments& args)
 {
-  CommandLine cl("chipflex info BODY.h5 [--json]", "Summarise a reduced body file.");
+  CommandLine cl("chipflex info BODY.h5 [--json] [--xdmf OUT.xdmf]",
+                 "Summarise a reduced body file.");
   cl.add_positional("BODY", "body file written by chipflex reduce");
   cl.add_flag("--json", "print one JSON object instead of text");
+  cl.add_option("--xdmf", "OUT.xdmf",
+                "also write the mesh (all nodes, the skin faces as cells) with every mode "
+                "shape as a point vector array mode_K_F_Hz for ParaView: OUT.xdmf + "
+                "OUT.modes.h5");
   if (!cl.parse(args))
     return 0;
   const std::string path = cl.get("BODY");
   const ReducedBodyData body = read_reduced_body(path);
+  // Written before anything is printed: a bad path is one line on stderr and no output.
+  if (cl.has("--xdmf"))
+    write_body_xdmf(body, path, cl.get("--xdmf"));
   if (cl.flag("--json"))
     print_json(body);
   else
+  {
     print_text(path, body);
+    if (cl.has("--xdmf"))
+      std::cout << "  written      " << cl.get("--xdmf") << " (" << body.n_modes()
+                << " mode shapes on " << body.n_nodes() << " nodes)\n";
+  }
   return 0;
 }
 } // namespace chipflex::apps

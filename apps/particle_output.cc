@@ -1,5 +1,7 @@
 #include "apps/particle_output.h"
 
+#include "apps/array_names.h"
+#include "apps/surface_output.h"
 #include "common/atomic_output.h"
 #include "common/hdf5_file.h"
 #include "sph/fluid_solver.h"
@@ -23,6 +25,10 @@ ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid)
   f.density.resize(f.n);
   f.kind.resize(f.n);
   f.id.resize(f.n);
+  f.global_id.resize(f.n);
+  f.body.resize(f.n);
+  for (int w = 0; w < fluid.n_walls(); ++w)
+    f.body_names.push_back(surface_name(fluid.wall(w).name));
   const auto& p = fluid.particles();
   for (std::size_t i = 0; i < f.n; ++i)
   {
@@ -35,6 +41,8 @@ ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid)
     f.density[i] = p.density[i];
     f.kind[i] = std::int64_t(fluid.kind(i));
     f.id[i] = std::int64_t(p.id[i]);
+    f.global_id[i] = std::int64_t(fluid.global_id(i));
+    f.body[i] = fluid.wall_of(i);
   }
   return f;
 }
@@ -66,7 +74,11 @@ void ParticleOutput::resume(double time)
     const double t = h5.read_double_attribute("/", "time");
     if (t > time * (1 + 1e-12) + 1e-15)
       break;
-    frames_.push_back({t, std::size_t(h5.read_integer_attribute("/", "n_particles")), name});
+    const bool with_global_ids = h5.exists("/global_id");
+    if (with_global_ids)
+      body_names_ = h5.read_strings("/body_names");
+    frames_.push_back(
+        {t, std::size_t(h5.read_integer_attribute("/", "n_particles")), name, with_global_ids});
   }
 }
 
@@ -86,6 +98,9 @@ void ParticleOutput::write(double time, const ParticleFrame& f)
       h5.write("/density", f.density, {f.n});
       h5.write("/kind", f.kind, {f.n});
       h5.write("/id", f.id, {f.n});
+      h5.write("/global_id", f.global_id, {f.n});
+      h5.write("/body", f.body, {f.n});
+      h5.write("/body_names", f.body_names);
       // One vertex cell per particle: ParaView's Xdmf3 readers build no cells from a
       // Polyvertex topology without connectivity (the legacy reader does).
       std::vector<std::int64_t> cells(f.n);
@@ -95,12 +110,19 @@ void ParticleOutput::write(double time, const ParticleFrame& f)
     }
     out.commit();
   }
-  frames_.push_back({time, f.n, name});
+  frames_.push_back({time, f.n, name, true});
+  body_names_ = f.body_names;
   write_xdmf();
 }
 
 void ParticleOutput::write_xdmf() const
 {
+  // What the body numbers mean, in the body array's Information (ParaView's legend is
+  // the number; the names are in every frame's /body_names too).
+  std::string bodies = "-1 fluid";
+  for (std::size_t b = 0; b < body_names_.size(); ++b)
+    bodies += ", " + std::to_string(b) + " " + body_names_[b];
+
   AtomicOutput out(directory_ + "/particles.xdmf");
   {
     std::ofstream x(out.temporary_path());
@@ -116,12 +138,19 @@ void ParticleOutput::write_xdmf() const
         return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + type +
                "\" Precision=\"8\" Format=\"HDF\">" + f.file + ":/" + set + "</DataItem>";
       };
-      auto attribute = [&](const char* name, const char* unit, int components, const char* type)
+      // ParaView shows the array as name_unit (apps/array_names.h); the dataset keeps
+      // the bare name. `type`: Scalar, Vector or GlobalId.
+      auto attribute = [&](const std::string& set, const std::string& unit, const char* type,
+                           const char* number, const std::string& meaning = "",
+                           const std::string& shown = "")
       {
-        x << "    <Attribute Name=\"" << name << "\" AttributeType=\""
-          << (components > 1 ? "Vector" : "Scalar") << "\" Center=\"Node\">"
-          << "<Information Name=\"unit\" Value=\"" << unit << "\"/>" << item(name, components, type)
-          << "</Attribute>\n";
+        const int components = std::string(type) == "Vector" ? 3 : 1;
+        x << "    <Attribute Name=\"" << (shown.empty() ? name_with_unit(set, unit) : shown)
+          << "\" AttributeType=\"" << type << "\" Center=\"Node\">"
+          << "<Information Name=\"unit\" Value=\"" << unit << "\"/>";
+        if (!meaning.empty())
+          x << "<Information Name=\"meaning\" Value=\"" << meaning << "\"/>";
+        x << item(set, components, number) << "</Attribute>\n";
       };
       // The same Name in every frame: ParaView names the block after it.
       x << "   <Grid Name=\"particles\" GridType=\"Uniform\">\n"
@@ -129,11 +158,19 @@ void ParticleOutput::write_xdmf() const
         << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << f.n
         << "\" NodesPerElement=\"1\">" << item("cells", 1, "Int") << "</Topology>\n"
         << "    <Geometry GeometryType=\"XYZ\">" << item("position", 3, "Float") << "</Geometry>\n";
-      attribute("velocity", "m/s", 3, "Float");
-      attribute("pressure", "Pa", 1, "Float");
-      attribute("density", "kg/m^3", 1, "Float");
-      attribute("kind", "0 boundary, 1 fluid", 1, "Int");
-      attribute("id", "stable per kind", 1, "Int");
+      attribute("velocity", "m/s", "Vector", "Float");
+      attribute("pressure", "Pa", "Scalar", "Float");
+      attribute("density", "kg/m^3", "Scalar", "Float");
+      attribute("kind", "-", "Scalar", "Int", "0 boundary, 1 fluid");
+      attribute("id", "-", "Scalar", "Int", "stable per kind");
+      if (f.with_global_ids)
+      {
+        // AttributeType GlobalId: the legacy XDMF reader and both Xdmf3 readers make it
+        // the point data's global ids (what Find Data and selections by id go by).
+        attribute("global_id", "-", "GlobalId", "Int", "unique, the same particle in every frame",
+                  "GlobalIds");
+        attribute("body", "-", "Scalar", "Int", bodies);
+      }
       x << "   </Grid>\n";
     }
     x << "  </Grid>\n </Domain>\n</Xdmf>\n";

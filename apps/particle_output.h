@@ -1,11 +1,13 @@
 #pragma once
 // Particle frames for ParaView: DIR/particles/frame_NNNNNN.h5 (position and velocity as
-// n x 3, pressure, density, kind 0 boundary / 1 fluid, the stable id, and the vertex
-// cells 0..n-1) and DIR/particles.xdmf, a temporal collection of Polyvertex grids over
-// those files, rewritten atomically after every frame so that ParaView can open it while
-// the run goes on. Every frame carries its own particle count (particles may be removed
-// during a run); (kind, id) names one particle in every frame. docs/output.md lists the
-// arrays and units.
+// n x 3, pressure, density, kind 0 boundary / 1 fluid, the per-kind id, the global id,
+// the body (wall) a boundary particle belongs to, and the vertex cells 0..n-1) and
+// DIR/particles.xdmf, a temporal collection of Polyvertex grids over those files,
+// rewritten atomically after every frame so that ParaView can open it while the run goes
+// on. Every frame carries its own particle count (particles may be removed during a
+// run); the global id names one particle in every frame and is the XDMF's GlobalId
+// attribute, which ParaView's readers make the point data's global ids. docs/output.md
+// lists the arrays and units.
 
 #include <cstdint>
 #include <string>
@@ -28,6 +30,14 @@ struct ParticleFrame
   /// Stable within its kind: fluid 0..n_fluid-1 in order of creation, boundary by wall
   /// attachment (sph::ParticleArrays::id); the array order changes between frames.
   std::vector<std::int64_t> id;
+  /// Unique over both kinds, the same particle's in every frame (FluidSolver::global_id).
+  std::vector<std::int64_t> global_id;
+  /// The wall or body a boundary particle belongs to, an index into body_names; -1 for
+  /// a fluid particle (as DualSPHysics' mk tells the boundaries apart).
+  std::vector<std::int64_t> body;
+  /// Every wall and body of the fluid in the solver's order (tank first when it has one),
+  /// named as in walls.xdmf and skins.xdmf.
+  std::vector<std::string> body_names;
 };
 
 template <int dim>
@@ -52,8 +62,11 @@ private:
     double time;
     std::size_t n;
     std::string file;
+    /// Has global_id and body (frames of older runs kept by a restart have not).
+    bool with_global_ids;
   };
   std::string directory_;
   std::vector<Frame> frames_;
+  std::vector<std::string> body_names_; ///< of the last frame, for the XDMF's legend
 };
 } // namespace chipflex::apps

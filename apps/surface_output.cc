@@ -1,5 +1,6 @@
 #include "apps/surface_output.h"
 
+#include "apps/array_names.h"
 #include "common/atomic_output.h"
 #include "common/hdf5_file.h"
 
@@ -179,7 +180,7 @@ void SurfaceOutput<dim>::write_xdmf() const
             << "    <Geometry GeometryType=\"XYZ\">"
             << data_item(n + " 3", "Float", base + "vertices") << "</Geometry>\n";
           for (std::size_t a = 0; a < s.arrays.size(); ++a)
-            x << "    <Attribute Name=\"" << s.arrays[a]
+            x << "    <Attribute Name=\"" << name_with_unit(s.arrays[a], s.units[a])
               << "\" AttributeType=\"Vector\" Center=\"Node\">"
               << "<Information Name=\"unit\" Value=\"" << s.units[a] << "\"/>"
               << data_item(n + " 3", "Float", base + s.arrays[a]) << "</Attribute>\n";

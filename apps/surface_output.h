@@ -24,7 +24,8 @@ public:
   struct PointArray
   {
     std::string name; ///< no spaces (ParaView, Python scripts)
-    std::string unit; ///< SI, written into the XDMF as Information "unit"
+    std::string unit; ///< SI, written into the XDMF as Information "unit" and into the
+                      ///< name ParaView shows (apps/array_names.h)
     std::vector<Vector> values;
   };
   struct Surface

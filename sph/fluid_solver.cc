@@ -189,6 +189,15 @@ void FluidSolver<dim>::move_wall(int id, const std::vector<Vector>& vertices,
 }
 
 template <int dim>
+int FluidSolver<dim>::wall_of(std::size_t i) const
+{
+  if (i >= particles_.n_boundary)
+    return -1;
+  const auto wall = impl_->attachments[particles_.id[i]].wall;
+  return wall == WallAttachment<dim>::no_wall ? -1 : int(wall);
+}
+
+template <int dim>
 typename FluidSolver<dim>::Vector FluidSolver<dim>::position(std::size_t i) const
 {
   Vector x;

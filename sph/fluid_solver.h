@@ -165,6 +165,16 @@ public:
   {
     return i < particles_.n_boundary ? ParticleKind::boundary : ParticleKind::fluid;
   }
+  /// Unique over both kinds and kept for the whole run, restarts included: a boundary
+  /// particle's id, then n_boundary + a fluid particle's id (ids follow the particles
+  /// through every sort, and an inlet's new particle takes the next unused fluid id).
+  std::uint64_t global_id(std::size_t i) const
+  {
+    const auto& p = particles_;
+    return i < p.n_boundary ? std::uint64_t(p.id[i]) : std::uint64_t(p.n_boundary) + p.id[i];
+  }
+  /// The wall (add_wall's id) boundary particle i belongs to; -1 for a fluid particle.
+  int wall_of(std::size_t i) const;
   Vector position(std::size_t i) const;
   Vector velocity(std::size_t i) const;
   double pressure(std::size_t i) const;

@@ -1,9 +1,11 @@
 #!/bin/sh
 # The outputs of `chipflex run` open in ParaView with their cells, ids, units, walls and
 # bodies (docs/output.md), for a run that finishes and for one the solver stops:
-#  1. a coarse elastic gate (a one-link chain, no body file needed) under a water column,
-#     in a dummy-particle tank with the Lennard-Jones wall above the gate, 0.03 s, then
-#     restarted from its checkpoint to 0.04 s;
+#  1. a coarse elastic gate (a one-link chain with dummy particles, no body file needed)
+#     under a water column, in a dummy-particle tank with the Lennard-Jones wall above the
+#     gate, 0.03 s, then restarted from its checkpoint to 0.04 s: the global ids follow
+#     the particles across the restart, and the body array tells the tank's dummy
+#     particles (still) from the gate's (moving);
 #  2. water falling out of a tight domain: exit status 3, a frame at the stop time,
 #     probes.csv and summary.txt with status=stopped.
 # tests/apps/check_outputs.py checks them with python3 + h5py and, where pvpython is
@@ -78,6 +80,7 @@ subsection bodies
     set density     = 1100
     set spring rate = 3.95
     set implicit = false
+    set wall model  = dummy particles
   end
 end
 CASE
