@@ -646,8 +646,16 @@ CaseFile read_case_file(const std::string& path)
     prm.enter_subsection("time");
     const bool automatic_scheme = prm.get("scheme") == "automatic";
     prm.leave_subsection();
-    if (automatic_scheme && n_case_bodies(prm, c.body_subsections) > 0)
-      c.case_2d.fluid.scheme = c.case_3d.fluid.scheme = sph::TimeScheme::position_verlet;
+    if (n_case_bodies(prm, c.body_subsections) > 0)
+    {
+      if (automatic_scheme)
+        c.case_2d.fluid.scheme = c.case_3d.fluid.scheme = sph::TimeScheme::position_verlet;
+      // The Verlet step's velocity update spans two steps, so the coupling's momentum
+      // exchange would not be exact (docs/coupling.md).
+      if (!sph::is_symplectic(c.dimension == 2 ? c.case_2d.fluid.scheme : c.case_3d.fluid.scheme))
+        throw InputError("time/scheme", "'verlet': a case with bodies needs symplectic or "
+                                        "position verlet (or automatic, the default)");
+    }
     c.end_time = c.dimension == 2 ? c.case_2d.end_time : c.case_3d.end_time;
     c.frame_interval = c.dimension == 2 ? c.case_2d.output_interval : c.case_3d.output_interval;
     prm.enter_subsection("output");

@@ -134,7 +134,11 @@ std::string FluidSimulation<dim>::summary() const
   std::ostringstream s;
   s << dim << "D SPH fluid: " << fluid_->n_fluid() << " fluid + " << fluid_->n_boundary()
     << " boundary particles, dp = " << p.particle_spacing << " m, h = " << p.smoothing_length()
-    << " m, c0 = " << p.speed_of_sound << " m/s, " << fluid_->n_walls() << " wall(s)\n";
+    << " m, c0 = " << p.speed_of_sound << " m/s, " << fluid_->n_walls() << " wall(s), scheme "
+    << (p.scheme == sph::TimeScheme::symplectic        ? "symplectic"
+        : p.scheme == sph::TimeScheme::position_verlet ? "position verlet"
+                                                       : "verlet")
+    << "\n";
   for (int k = 0; k < fluid_->n_open_boundaries(); ++k)
   {
     const auto& z = fluid_->open_boundary(k);
