@@ -53,13 +53,17 @@ int reduce_command(const Arguments& args)
                  "Reduce a gmsh mesh to a floating-frame body file (HDF5, format v2): consistent\n"
                  "mass and stiffness (deal.II), elastic normal modes (SLEPc Krylov-Schur,\n"
                  "shift-and-invert, MUMPS), optional static correction modes, a mass-orthonormal\n"
-                 "basis and the inertia invariants. Works under mpirun -np N.");
+                 "basis and the inertia invariants. Works under mpirun -np N.\n"
+                 "The material has no defaults: --E, --nu and --rho are required (the elastic\n"
+                 "gate's rubber, Antoci et al. 2007: --E 1.2e7 --nu 0.4 --rho 1100).");
   cl.add_positional("MESH", "gmsh mesh (.msh) with named physical groups");
   cl.add_option("--output", "FILE", "body file to write (.h5)", "", true);
   cl.add_alias("-o", "--output");
-  cl.add_option("--E", "PA", "Young's modulus", "1.2e7");
-  cl.add_option("--nu", "-", "Poisson's ratio, in (-1, 0.5)", "0.4");
-  cl.add_option("--rho", "KG/M3", "density", "1100");
+  // No defaults: a forgotten option must not silently give the elastic gate's rubber.
+  // fem::Material::check() names a missing one (checked after --help is handled).
+  cl.add_option("--E", "PA", "Young's modulus (required)");
+  cl.add_option("--nu", "-", "Poisson's ratio, in (-1, 0.5) (required)");
+  cl.add_option("--rho", "KG/M3", "density (required)");
   cl.add_flag("--plane-strain", "2D: plane strain (default), per metre of depth");
   cl.add_flag("--plane-stress", "2D: plane stress, per metre of depth");
   cl.add_option("--clamp", "GROUP", "fix this boundary group (cantilever); default free-free");
@@ -94,9 +98,12 @@ int reduce_command(const Arguments& args)
 
   fem::ReductionSettings settings;
   settings.mesh_file = cl.get("MESH");
-  settings.material.youngs_modulus = cl.get_double("--E");
-  settings.material.poisson_ratio = cl.get_double("--nu");
-  settings.material.density = cl.get_double("--rho");
+  if (cl.has("--E"))
+    settings.material.youngs_modulus = cl.get_double("--E");
+  if (cl.has("--nu"))
+    settings.material.poisson_ratio = cl.get_double("--nu");
+  if (cl.has("--rho"))
+    settings.material.density = cl.get_double("--rho");
   if (cl.flag("--plane-strain") && cl.flag("--plane-stress"))
     throw InputError("--plane-stress", "cannot be combined with --plane-strain");
   settings.material.plane_stress = cl.flag("--plane-stress");

@@ -14,7 +14,7 @@ out=out/elastic_gate
 mkdir -p "$out"
 build/bin/chipflex mesh gate -o "$out/gate.msh"
 build/bin/chipflex reduce "$out/gate.msh" -o "$out/gate.h5" --clamp clamp --modes 8 \
-  --static-modes pressure:xmin --nonlinear
+  --static-modes pressure:xmin --nonlinear --E 1.2e7 --nu 0.4 --rho 1100
 build/bin/chipflex info "$out/gate.h5"
 build/bin/chipflex compare "$out/gate.msh" "$out/gate.h5" --load force:tip:1,0
 # shellcheck disable=SC2086

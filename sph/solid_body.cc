@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace chipflex::sph
 {
@@ -14,6 +15,19 @@ namespace
 constexpr std::size_t parallel_threshold = 4000;
 } // namespace
 
+void SolidMaterial::check() const
+{
+  const char* no_default = " (no default: every body states its material)";
+  if (std::isnan(density))
+    throw std::invalid_argument(std::string("SolidMaterial: density required") + no_default);
+  if (std::isnan(youngs_modulus))
+    throw std::invalid_argument(std::string("SolidMaterial: youngs_modulus required") + no_default);
+  if (std::isnan(poisson_ratio))
+    throw std::invalid_argument(std::string("SolidMaterial: poisson_ratio required") + no_default);
+  if (!(density > 0) || !(youngs_modulus > 0) || !(poisson_ratio > -1 && poisson_ratio < 0.5))
+    throw std::invalid_argument("SolidMaterial: density and E must be > 0, -1 < nu < 0.5");
+}
+
 double SolidMaterial::wave_speed() const
 {
   return std::sqrt((bulk_modulus() + 4.0 / 3.0 * shear_modulus()) / density);
@@ -23,9 +37,7 @@ template <int dim>
 SolidBody<dim>::SolidBody(const SolidMaterial& material, double spacing, double smoothing_length)
     : material_(material), spacing_(spacing), h_(smoothing_length)
 {
-  if (!(material.density > 0) || !(material.youngs_modulus > 0) ||
-      !(material.poisson_ratio > -1 && material.poisson_ratio < 0.5))
-    throw std::invalid_argument("SolidBody: density and E must be > 0, -1 < nu < 0.5");
+  material.check();
   if (!(spacing > 0) || !(smoothing_length > 0))
     throw std::invalid_argument("SolidBody: spacing and smoothing length must be > 0");
   // Wendland C2, support 2h (the same kernel as the fluid).

@@ -21,6 +21,7 @@
 // same surface-node path as every other body kind.
 
 #include <Eigen/Dense>
+#include <limits>
 #include <vector>
 
 namespace chipflex::sph
@@ -41,11 +42,14 @@ enum class SolidFormulation
   total_lagrangian
 };
 
+/// Density, E and nu have no defaults (NaN: not given): a default would silently give
+/// every solid that forgot one the elastic gate's rubber. The numerical parameters below
+/// keep theirs. check() names what is missing.
 struct SolidMaterial
 {
-  double density = 1100;          ///< kg/m^3 (Table 1)
-  double youngs_modulus = 1.2e7;  ///< Pa (Table 1)
-  double poisson_ratio = 0.4;     ///< - (Table 1)
+  double density = std::numeric_limits<double>::quiet_NaN();        ///< kg/m^3
+  double youngs_modulus = std::numeric_limits<double>::quiet_NaN(); ///< Pa
+  double poisson_ratio = std::numeric_limits<double>::quiet_NaN();  ///< -
   double artificial_stress = 0.2; ///< eps of Gray et al. (Table 1)
   double viscosity_alpha = 1.0;   ///< Monaghan artificial viscosity (Gray et al. use 1)
   double viscosity_beta = 0.0;    ///< quadratic term (velocities here are far below c)
@@ -67,6 +71,9 @@ struct SolidMaterial
   /// gives 1), particle i keeps the uncorrected gradient: the matrix is ill-conditioned
   /// for particles with few neighbours (a corner, a particle thrown off the surface).
   double correction_min_determinant = 0.05;
+
+  /// Throws std::invalid_argument naming a value not given or out of range.
+  void check() const;
 
   double bulk_modulus() const { return youngs_modulus / (3 * (1 - 2 * poisson_ratio)); }
   double shear_modulus() const { return youngs_modulus / (2 * (1 + poisson_ratio)); }

@@ -61,12 +61,29 @@ std::string BodyKeys::text(const std::string& key) const
 
 double BodyKeys::number(const std::string& key) const
 {
-  return prm_.get_double(key);
+  // Keys without a default (a body's material) are declared as text with an empty
+  // default, so the value is checked here rather than by a deal.II pattern.
+  const std::string value = prm_.get(key);
+  if (value.find_first_not_of(" \t") == std::string::npos)
+    throw InputError(at(key), "required (no default: every body states its material)");
+  std::size_t used = 0;
+  double v = 0;
+  try
+  {
+    v = std::stod(value, &used);
+  }
+  catch (const std::exception&)
+  {
+    used = 0;
+  }
+  if (used == 0 || value.find_first_not_of(" \t", used) != std::string::npos)
+    throw InputError(at(key), "'" + value + "' is not a number");
+  return v;
 }
 
 double BodyKeys::positive(const std::string& key) const
 {
-  const double v = prm_.get_double(key);
+  const double v = number(key);
   if (!(v > 0))
     throw InputError(at(key), "must be positive, got " + prm_.get(key));
   return v;

@@ -25,7 +25,7 @@ public:
     keys.declare("links", "1", "integer >= 1", "Number of equal links.");
     keys.declare("length", "0", "double >= 0", "Total length of the chain / strip, m (required).");
     keys.declare("thickness", "0", "double >= 0", "Thickness of the links / strip, m (required).");
-    keys.declare("density", "1100", "double >= 0", "kg/m^3.");
+    keys.declare("density", "", "text", "kg/m^3 (required: no default).");
     keys.declare("spring rate", "0", "double >= 0",
                  "Torsion spring at every joint, Nm/rad per metre of depth (required).");
     keys.declare("spring damping", "0", "double >= 0", "Torsion dampers, Nms/rad per metre.");

@@ -249,9 +249,9 @@ public:
                  "`chipflex reduce`).");
     keys.declare("clamp group", "clamp", "text",
                  "fe, clamped: the boundary group held fixed (as `reduce --clamp`).");
-    keys.declare("density", "1100", "double >= 0", "kg/m^3.");
-    keys.declare("youngs modulus", "1.2e7", "double >= 0", "E, Pa (Table 1).");
-    keys.declare("poisson ratio", "0.4", "double", "nu, - (Table 1); -1 < nu < 0.5.");
+    keys.declare("density", "", "text", "kg/m^3 (required: no default).");
+    keys.declare("youngs modulus", "", "text", "E, Pa (required: no default).");
+    keys.declare("poisson ratio", "", "text", "nu, -, -1 < nu < 0.5 (required: no default).");
     keys.declare("plane stress", "false", "bool",
                  "fe, 2D: plane stress instead of plane strain (svk only).");
     keys.declare("material model", "svk", "svk|neo-hooke",

@@ -36,7 +36,7 @@ public:
                  "cube), m.");
     keys.declare("radius", "0.025", "double >= 0", "Cylinder or sphere radius, m.");
     keys.declare("cylinder length", "0.05", "double >= 0", "Along the frame's z axis, m.");
-    keys.declare("density", "1100", "double >= 0", "kg/m^3.");
+    keys.declare("density", "", "text", "kg/m^3 (required: no default).");
     keys.declare("mesh", "", "text",
                  "gmsh .msh (2D: lines or the boundary of a surface mesh; 3D: triangles or the "
                  "boundary of a tetrahedral mesh) or STL (3D) file, frame coordinates, m.");

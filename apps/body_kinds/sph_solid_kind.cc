@@ -1,7 +1,7 @@
 // Body kind `sph solid`: an elastic strip of SPH solid particles, clamped at one end, 2D
 // only: total-Lagrangian St Venant-Kirchhoff with corrected kernel gradients (Bonet & Lok
-// 1999) by default, or the seed's Gray, Monaghan & Swift 2001 solid. Its defaults are the
-// elastic gate's material (Table 1: rubber, E = 12 MPa, nu = 0.4, 1100 kg/m^3).
+// 1999) by default, or the seed's Gray, Monaghan & Swift 2001 solid. Density, E and nu
+// have no defaults: every body states its material.
 
 #include "apps/body_kinds/body_kind.h"
 #include "common/input_error.h"
@@ -24,9 +24,9 @@ public:
   {
     keys.declare("length", "0", "double >= 0", "Total length of the chain / strip, m (required).");
     keys.declare("thickness", "0", "double >= 0", "Thickness of the links / strip, m (required).");
-    keys.declare("density", "1100", "double >= 0", "kg/m^3.");
-    keys.declare("youngs modulus", "1.2e7", "double >= 0", "E, Pa (Table 1).");
-    keys.declare("poisson ratio", "0.4", "double", "nu, - (Table 1); -1 < nu < 0.5.");
+    keys.declare("density", "", "text", "kg/m^3 (required: no default).");
+    keys.declare("youngs modulus", "", "text", "E, Pa (required: no default).");
+    keys.declare("poisson ratio", "", "text", "nu, -, -1 < nu < 0.5 (required: no default).");
     keys.declare("artificial stress", "0.2", "double >= 0",
                  "epsilon (Table 1); updated Lagrangian only.");
     keys.declare("solid viscosity", "1", "double >= 0", "Monaghan alpha, -.");

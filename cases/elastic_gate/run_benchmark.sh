@@ -38,11 +38,12 @@ out=$(cd "$out" && pwd)
 cd "$out"
 [ -f gate.msh ] || "$chipflex" mesh gate -o gate.msh
 reduce="--clamp clamp --modes 8 --static-modes pressure:xmin --nonlinear"
-[ -f gate.h5 ] || "$chipflex" reduce gate.msh -o gate.h5 $reduce
+# Antoci et al. (2007), Table 1: the gate's rubber. `reduce` has no material defaults.
+[ -f gate.h5 ] || "$chipflex" reduce gate.msh -o gate.h5 $reduce --E 1.2e7 --nu 0.4 --rho 1100
 case " $variants" in
   *" flexible_sphinxsys"*)
     [ -f gate_sphinxsys.h5 ] ||
-      "$chipflex" reduce gate.msh -o gate_sphinxsys.h5 $reduce --E 7.8e6 --nu 0.47 ;;
+      "$chipflex" reduce gate.msh -o gate_sphinxsys.h5 $reduce --E 7.8e6 --nu 0.47 --rho 1100 ;;
 esac
 dp=$(awk "BEGIN { print $dp_mm / 1000 }")
 gap=$(awk "BEGIN { print ${GAP_MM:-1} / 1000 }")

@@ -42,7 +42,7 @@ facet() { echo " facet normal 0 0 0"; echo "  outer loop"
 "$chipflex" mesh plate -o "$dir/plate.msh" --length 0.06 --thickness 0.03 --width 0.03 \
   --size 0.01 > /dev/null || fail "mesh plate"
 "$chipflex" reduce "$dir/plate.msh" -o "$dir/plate.h5" --clamp clamp --modes 4 --E 2e6 \
-  > /dev/null || fail "reduce plate"
+  --nu 0.4 --rho 1100 > /dev/null || fail "reduce plate"
 
 cat > "$dir/case.prm" <<'PRM'
 set dimension = 3
@@ -146,14 +146,15 @@ bad() {
     echo "ok   $name: $(cat "$dir/stderr")"
   fi
 }
-printf '    set kind = rigid\n    set links = 2\n' | bad "key of another kind" "body 1, links: does not apply to a body of kind rigid"
+printf '    set kind = rigid\n    set links = 2\n    set density = 1000\n' | bad "key of another kind" "body 1, links: does not apply to a body of kind rigid"
 printf '    set kind = chain\n' | bad "2D-only kind in 3D" "chain kind exists in 2D cases only"
-printf '    set kind = rigid\n    set shape = mesh\n    set mesh = nothing.stl\n' | bad "missing mesh" "nothing.stl"
-printf '    set kind = rigid\n    set shape = mesh\n    set mesh = square.stl\n' | bad "open surface as a rigid body" "not closed"
-printf '    set kind = rigid\n    set size = 0.1, 0.1\n' | bad "box size of a 2D box" "size"
-printf '    set kind = rigid\n    set position = 0.1, 0.1\n' | bad "2D position in 3D" "position"
+printf '    set kind = rigid\n    set shape = mesh\n    set mesh = nothing.stl\n    set density = 1000\n' | bad "missing mesh" "nothing.stl"
+printf '    set kind = rigid\n    set shape = mesh\n    set mesh = square.stl\n    set density = 1000\n' | bad "open surface as a rigid body" "not closed"
+printf '    set kind = rigid\n    set size = 0.1, 0.1\n    set density = 1000\n' | bad "box size of a 2D box" "size"
+printf '    set kind = rigid\n    set position = 0.1, 0.1\n    set density = 1000\n' | bad "2D position in 3D" "position"
 printf '    set kind = flexible\n    set body file = none.h5\n' | bad "missing body file" "none.h5"
 printf '    set kind = moving wall\n' | bad "moving wall without a surface" "needs either an outline or a surface"
 printf '    set kind = rigid\n    set density = -5\n' | bad "negative density" "density"
+printf '    set kind = rigid\n' | bad "rigid body without density" "body 1, density: required"
 [ "$failures" -eq 0 ] || exit 1
 echo "ok"

@@ -22,11 +22,11 @@ done
 "$chipflex" info --help | grep -q -- "--xdmf OUT.xdmf" || fail "info --help lacks --xdmf"
 "$chipflex" mesh gate -o "$dir/gate.msh" > /dev/null || fail "mesh gate"
 "$chipflex" reduce "$dir/gate.msh" -o "$dir/gate.h5" --clamp clamp --modes 4 \
-  --static-modes pressure:xmin > /dev/null || fail "reduce gate"
+  --E 1.2e7 --nu 0.4 --rho 1100 --static-modes pressure:xmin > /dev/null || fail "reduce gate"
 "$chipflex" mesh plate -o "$dir/plate.msh" --length 0.06 --thickness 0.03 --width 0.03 \
   --size 0.01 > /dev/null || fail "mesh plate"
-"$chipflex" reduce "$dir/plate.msh" -o "$dir/plate.h5" --clamp clamp --modes 3 > /dev/null ||
-  fail "reduce plate"
+"$chipflex" reduce "$dir/plate.msh" -o "$dir/plate.h5" --clamp clamp --modes 3 \
+  --E 1.2e7 --nu 0.4 --rho 1100 > /dev/null || fail "reduce plate"
 mkdir "$dir/view"
 for body in gate plate; do
   "$chipflex" info "$dir/$body.h5" --xdmf "$dir/view/$body.xdmf" > "$dir/$body.log" 2>&1 ||

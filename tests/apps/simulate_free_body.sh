@@ -11,7 +11,8 @@ dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 "$chipflex" mesh gate -o "$dir/gate.msh" > /dev/null || fail "mesh"
-"$chipflex" reduce "$dir/gate.msh" -o "$dir/free.h5" --modes 6 > /dev/null || fail "reduce"
+"$chipflex" reduce "$dir/gate.msh" -o "$dir/free.h5" --modes 6 --E 1.2e7 --nu 0.4 --rho 1100 > /dev/null ||
+  fail "reduce"
 mass=$("$chipflex" info "$dir/free.h5" --json | sed -n 's/.*"mass": *\([0-9.e+-]*\).*/\1/p' | head -1)
 [ -n "$mass" ] || fail "info --json gives no mass"
 "$chipflex" simulate "$dir/free.h5" --end-time 0.02 --dt 1e-4 --load force:tip:0,-2 \

@@ -15,6 +15,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 cd "$dir" || fail "no temporary folder"
 "$chipflex" mesh gate -o gate.msh > /dev/null || fail "mesh"
 "$chipflex" reduce gate.msh -o gate.h5 --clamp clamp --modes 8 --static-modes pressure:xmin \
+  --E 1.2e7 --nu 0.4 --rho 1100 \
   > /dev/null 2>&1 || fail "reduce"
 "$chipflex" export fmu gate.h5 -o gate.fmu > /dev/null || fail "export fmu"
 sed -e "s|^\(  set particle spacing *=\).*|\1 0.002|" -e "s|^\(  set end time *=\).*|\1 0.03|" \

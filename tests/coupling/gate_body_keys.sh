@@ -39,6 +39,9 @@ subsection bodies
   subsection body 1
     set name        = gate
     set kind        = sph solid
+    set density     = 1100
+    set youngs modulus = 1.2e7
+    set poisson ratio  = 0.4
     set position    = 0.1025, 0.079
     set length      = 0.079
     set thickness   = 0.005

@@ -13,6 +13,16 @@ using Vector = Eigen::Vector2d;
 
 namespace
 {
+/// The elastic gate's rubber (Antoci et al. 2007, Table 1); the material has no defaults.
+chipflex::sph::SolidMaterial table1_rubber()
+{
+  chipflex::sph::SolidMaterial m;
+  m.density = 1100;
+  m.youngs_modulus = 1.2e7;
+  m.poisson_ratio = 0.4;
+  return m;
+}
+
 Vector tip(const SphSolidBody& body)
 {
   std::vector<Vector> x;
@@ -28,7 +38,7 @@ TEST_CASE("SPH solid skin sits half a spacing outside the particles", "[coupling
 {
   chipflex::sph::SolidStripLayout layout; // the Antoci gate, Table 1
   layout.clamped_end_centre = Vector(0.1025, 0.079);
-  SphSolidBody body(chipflex::sph::SolidMaterial{}, layout, 1.3, Vector::Zero());
+  SphSolidBody body(table1_rubber(), layout, 1.3, Vector::Zero());
   CHECK(body.solid().n_particles() == 79 * 6 + 8 * 4);
   std::vector<Vector> x;
   body.skin_positions(x);
@@ -57,7 +67,7 @@ TEST_CASE("SPH solid: skin forces change momentum by exactly their impulse", "[c
   layout.layers = 3;
   layout.clamp_columns = 5;
   layout.clamp_rows = 2;
-  SphSolidBody body(chipflex::sph::SolidMaterial{}, layout, 1.3, Vector::Zero());
+  SphSolidBody body(table1_rubber(), layout, 1.3, Vector::Zero());
   std::vector<Vector> f(body.n_skin_nodes());
   Vector total = Vector::Zero();
   for (std::size_t k = 0; k < f.size(); ++k)
@@ -91,7 +101,7 @@ TEST_CASE("SPH solid, total Lagrangian: an affine deformation gives the exact St
   A << 1.02, 0.03, -0.01, 0.97;
   for (const bool corrected : {true, false})
   {
-    chipflex::sph::SolidMaterial material;
+    chipflex::sph::SolidMaterial material = table1_rubber();
     material.kernel_gradient_correction = corrected;
     material.viscosity_alpha = 0;
     material.hourglass_control = 0;
@@ -132,7 +142,7 @@ TEST_CASE("SPH solid: a particle with too few neighbours falls back to the plain
 {
   // Two particles alone: sum_j V_j grad W (x_j - x_i)^T has rank one, det 0, and its
   // inverse does not exist; both fall back and stay finite.
-  chipflex::sph::SolidMaterial material;
+  chipflex::sph::SolidMaterial material = table1_rubber();
   chipflex::sph::SolidBody<2> solid(material, 1e-3, 1.3e-3);
   solid.add_particle(Vector(0, 0), 1e-6, false);
   solid.add_particle(Vector(1e-3, 0), 1e-6, false);

@@ -26,6 +26,16 @@ using Vector = Eigen::Vector2d;
 
 namespace
 {
+/// The elastic gate's rubber (Antoci et al. 2007, Table 1); the material has no defaults.
+chipflex::sph::SolidMaterial table1_rubber()
+{
+  chipflex::sph::SolidMaterial m;
+  m.density = 1100;
+  m.youngs_modulus = 1.2e7;
+  m.poisson_ratio = 0.4;
+  return m;
+}
+
 /// Downward crossings of `level` in the sampled history (linear interpolation).
 std::vector<double> downward_crossings(const std::vector<double>& t, const std::vector<double>& w,
                                        double level)
@@ -40,7 +50,7 @@ std::vector<double> downward_crossings(const std::vector<double>& t, const std::
 /// The Table 1 strip as a horizontal cantilever without gravity.
 struct HorizontalStrip
 {
-  chipflex::sph::SolidMaterial material; // Table 1
+  chipflex::sph::SolidMaterial material = table1_rubber();
   chipflex::sph::SolidStripLayout layout = horizontal();
   SphSolidBody body{material, layout, 1.3, Vector::Zero()};
 

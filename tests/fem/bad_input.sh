@@ -25,29 +25,43 @@ expect() {
 }
 
 "$chipflex" mesh gate -o "$dir/gate.msh" --size 0.0025 > /dev/null || exit 1
-"$chipflex" reduce "$dir/gate.msh" -o "$dir/gate.h5" --clamp clamp --modes 2 > /dev/null || exit 1
+# The gate's rubber: `reduce` has no material defaults. Unquoted below (three options).
+rubber="--E 1.2e7 --nu 0.4 --rho 1100"
+"$chipflex" reduce "$dir/gate.msh" -o "$dir/gate.h5" $rubber \
+  --clamp clamp --modes 2 > /dev/null || exit 1
 out="$dir/out.h5"
 
-expect "missing mesh" "nothing.msh" "$out" "$chipflex" reduce "$dir/nothing.msh" -o "$out"
+expect "missing mesh" "nothing.msh" "$out" "$chipflex" reduce "$dir/nothing.msh" -o "$out" $rubber
 printf 'this is not a mesh\n' > "$dir/garbage.msh"
-expect "malformed mesh" "garbage.msh" "$out" "$chipflex" reduce "$dir/garbage.msh" -o "$out"
+expect "malformed mesh" "garbage.msh" "$out" "$chipflex" reduce "$dir/garbage.msh" -o "$out" $rubber
 head -c 3000 "$dir/gate.msh" > "$dir/truncated.msh"
-expect "truncated mesh" "truncated.msh" "$out" "$chipflex" reduce "$dir/truncated.msh" -o "$out"
-expect "missing group" "nosuch" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --clamp nosuch
+expect "truncated mesh" "truncated.msh" "$out" \
+  "$chipflex" reduce "$dir/truncated.msh" -o "$out" $rubber
+expect "missing group" "nosuch" "$out" \
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" $rubber --clamp nosuch
 expect "missing static group" "nosuch" "$out" \
-  "$chipflex" reduce "$dir/gate.msh" -o "$out" --static-modes pressure:nosuch
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" $rubber --static-modes pressure:nosuch
 expect "bad static kind" "twist" "$out" \
-  "$chipflex" reduce "$dir/gate.msh" -o "$out" --static-modes twist:tip
-expect "nu = 0.5" "--nu" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --nu 0.5
-expect "nu = -1" "--nu" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --nu -1
-expect "E = 0" "--E" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --E 0
-expect "rho < 0" "--rho" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --rho -1
-expect "modes = 0" "--modes" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --modes 0
-expect "degree 3" "--degree" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --degree 3
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" $rubber --static-modes twist:tip
+expect "nu = 0.5" "--nu" "$out" \
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" --E 1.2e7 --rho 1100 --nu 0.5
+expect "nu = -1" "--nu" "$out" \
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" --E 1.2e7 --rho 1100 --nu -1
+expect "E = 0" "--E" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" --nu 0.4 --rho 1100 --E 0
+expect "rho < 0" "--rho" "$out" \
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" --E 1.2e7 --nu 0.4 --rho -1
+expect "E missing" "--E: required" "$out" \
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" --nu 0.4 --rho 1100
+expect "nu missing" "--nu: required" "$out" \
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" --E 1.2e7 --rho 1100
+expect "rho missing" "--rho: required" "$out" \
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" --E 1.2e7 --nu 0.4
+expect "modes = 0" "--modes" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" $rubber --modes 0
+expect "degree 3" "--degree" "$out" "$chipflex" reduce "$dir/gate.msh" -o "$out" $rubber --degree 3
 expect "derivatives without --nonlinear" "--modal-derivatives" "$out" \
-  "$chipflex" reduce "$dir/gate.msh" -o "$out" --modal-derivatives 2
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" $rubber --modal-derivatives 2
 expect "more derivatives than modes" "--modal-derivatives" "$out" \
-  "$chipflex" reduce "$dir/gate.msh" -o "$out" --modes 2 --nonlinear --modal-derivatives 3
+  "$chipflex" reduce "$dir/gate.msh" -o "$out" $rubber --modes 2 --nonlinear --modal-derivatives 3
 expect "bad mesh size" "--size" "$dir/m.msh" "$chipflex" mesh gate -o "$dir/m.msh" --size -1
 expect "unknown mesh kind" "sphere" "$dir/m.msh" "$chipflex" mesh sphere -o "$dir/m.msh"
 

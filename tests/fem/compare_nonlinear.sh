@@ -17,7 +17,7 @@ value() { sed -n "s/.*\"$1\": *\([0-9.eE+-]*\).*/\1/p" "$2"; }
 
 "$chipflex" mesh gate -o "$dir/gate.msh" --size 0.0025 > /dev/null
 "$chipflex" reduce "$dir/gate.msh" -o "$dir/gate.h5" --clamp clamp --modes 3 \
-  --static-modes force:tip:1,0 > /dev/null
+  --E 1.2e7 --nu 0.4 --rho 1100 --static-modes force:tip:1,0 > /dev/null
 "$chipflex" compare "$dir/gate.msh" "$dir/gate.h5" --load force:tip:1,0 --json --duration 0.07 \
   > "$dir/linear.json"
 "$chipflex" compare "$dir/gate.msh" "$dir/gate.h5" --load force:tip:1,0 --json --duration 0.07 \

@@ -13,7 +13,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 
 "$chipflex" mesh gate -o "$dir/gate.msh" --size 0.0025 > /dev/null
 "$chipflex" reduce "$dir/gate.msh" -o "$dir/gate.h5" --clamp clamp --modes 3 \
-  --static-modes force:tip:1,0 > /dev/null
+  --E 1.2e7 --nu 0.4 --rho 1100 --static-modes force:tip:1,0 > /dev/null
 
 "$chipflex" info "$dir/gate.h5" --json > "$dir/info.json"
 [ "$(wc -l < "$dir/info.json")" -ge 1 ] || fail "info --json printed nothing"

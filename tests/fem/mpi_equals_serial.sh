@@ -10,7 +10,7 @@ trap 'rm -rf "$dir"' EXIT
 mpi="mpirun --allow-run-as-root --oversubscribe -np 2"
 
 "$chipflex" mesh gate -o "$dir/gate.msh" --size 0.0025 > /dev/null
-set -- "$dir/gate.msh" --clamp clamp --modes 6 --static-modes pressure:xmin,force:tip:0,-1
+set -- "$dir/gate.msh" --clamp clamp --modes 6 --E 1.2e7 --nu 0.4 --rho 1100 --static-modes pressure:xmin,force:tip:0,-1
 "$chipflex" reduce "$@" -o "$dir/gate_serial.h5" > /dev/null
 $mpi "$chipflex" reduce "$@" -o "$dir/gate_mpi.h5" > /dev/null
 "$compare" "$dir/gate_serial.h5" "$dir/gate_mpi.h5"

@@ -475,6 +475,7 @@ TEST_CASE("second-order gmsh meshes of every cell kind stay curved", "[fem][chip
   {
     ReductionSettings s;
     s.mesh_file = curved_mesh(dim, quads);
+    s.material = steel();
     s.material.density = 1;
     s.n_modes = 2; // a free body: the reduction checks its rigid modes are at zero
     const double curved = reduce_body(s).mass;
@@ -492,6 +493,7 @@ TEST_CASE("second-order gmsh meshes of every cell kind stay curved", "[fem][chip
   // Incomplete second-order cells have no node in the middle of their faces: rejected with
   // the curved geometry, read straight-sided on request.
   ReductionSettings s;
+  s.material = steel(); // so that the throw below is the mesh's
   s.mesh_file = curved_mesh(2, true, false);
   s.n_modes = 2;
   CHECK_THROWS_AS(reduce_body(s), InputError);

@@ -12,6 +12,7 @@ TEST_CASE("clamped 2D gate: first bending frequencies against Euler-Bernoulli", 
   // mesh (t/4) with quadratic quads. Timoshenko's shear correction for mode 1 at L/t = 15.8
   // is about -0.25 %; 1 % bounds it with the 2D clamp's local stiffening.
   ReductionSettings s;
+  s.material = {1.2e7, 0.4, 1100, false}; // the gate's rubber
   s.mesh_file = gate_mesh(0.005 / 4);
   s.clamp_group = "clamp";
   s.n_modes = 3;
@@ -59,6 +60,7 @@ TEST_CASE("free-free 2D gate: no rigid modes, elastic frequencies converge", "[f
   for (const double size : {t / 1, t / 2, t / 4})
   {
     ReductionSettings s;
+    s.material = {1.2e7, 0.4, 1100, false}; // the gate's rubber
     s.mesh_file = gate_mesh(size);
     s.n_modes = 4;
     const auto body = reduce_body(s);

@@ -65,6 +65,7 @@ TEST_CASE("2D rectangle: mass and inertia per metre of depth exact", "[fem]")
 {
   const double t = 0.005, l = 0.079, rho = 1100;
   ReductionSettings s;
+  s.material = {1.2e7, 0.4, rho, false}; // the gate's rubber
   s.mesh_file = gate_mesh(t / 2);
   s.n_modes = 3;
   s.static_modes = {"force:tip:1,0"};

@@ -55,6 +55,7 @@ Eigen::MatrixXd read_matrix_market(const std::string& path)
 TEST_CASE("exported matrices: HDF5 CSR read back, rows map to the body file's modes", "[fem]")
 {
   ReductionSettings s;
+  s.material = {1.2e7, 0.4, 1100, false}; // the gate's rubber
   s.mesh_file = gate_mesh(0.005 / 2);
   s.clamp_group = "clamp";
   s.n_modes = 3;

@@ -16,7 +16,8 @@ dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 "$chipflex" mesh gate -o "$dir/gate.msh" > /dev/null || fail "mesh"
-"$chipflex" reduce "$dir/gate.msh" -o "$dir/gate.h5" --clamp clamp --modes 6 > /dev/null 2>&1 ||
+"$chipflex" reduce "$dir/gate.msh" -o "$dir/gate.h5" --clamp clamp --modes 6 \
+  --E 1.2e7 --nu 0.4 --rho 1100 > /dev/null 2>&1 ||
   fail "reduce"
 "$chipflex" export fmu "$dir/gate.h5" -o "$dir/gate.fmu" > "$dir/log" 2>&1 ||
   fail "export: $(cat "$dir/log")"
