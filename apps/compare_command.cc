@@ -32,7 +32,7 @@ int compare_command(const Arguments& args)
   cl.add_option("--dt", "S", "time step (default: 1/40 of the lowest mode's period)");
   cl.add_flag("--nonlinear",
               "full side geometrically nonlinear (total Lagrangian, the load a dead load); "
-              "the reduced side's static response its own equilibrium (dynamic relaxation)");
+              "the reduced side's static response its own equilibrium (Newton, load increments)");
   cl.add_option("--material", "MODEL", "--nonlinear: svk or neo-hooke", "svk");
   cl.add_option("--increments", "N", "--nonlinear: static load increments", "10");
   cl.add_flag("--json", "print one JSON object");
@@ -108,6 +108,8 @@ int compare_command(const Arguments& args)
               << ",\n  \"static_reduced_m\": " << json_array(result.static_reduced, dim)
               << ",\n  \"n_steps\": " << result.time.size() - 1
               << ",\n  \"dt\": " << json_number(result.time.size() > 1 ? result.time[1] : 0.)
+              << ",\n  \"rho_infinity_full\": " << json_number(result.rho_infinity)
+              << ",\n  \"rho_infinity_reduced\": " << json_number(result.reduced_rho_infinity)
               << "\n}\n";
   }
   else
@@ -119,6 +121,11 @@ int compare_command(const Arguments& args)
               << result.static_rel_error << "\n"
               << "  transient  " << result.time.size() - 1 << " steps of " << result.time[1]
               << " s: max relative error " << result.transient_rel_error << "\n"
+              << (result.rho_infinity < 1 || result.reduced_rho_infinity < 1
+                      ? "  (a trapezoidal transient failed: generalised-alpha rho_infinity full " +
+                            std::to_string(result.rho_infinity) + ", reduced " +
+                            std::to_string(result.reduced_rho_infinity) + ")\n"
+                      : std::string())
               << "  seconds    full " << result.full_seconds << ", reduced "
               << result.reduced_seconds << " (" << result.reduced_integrator << ")\n";
   }

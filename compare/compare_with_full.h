@@ -18,8 +18,8 @@ struct CompareSettings
   double duration = 0;  ///< s; 0: five periods of the first mode
   double time_step = 0; ///< s; 0: 1/40 of the first period
   /// The full side geometrically nonlinear (total Lagrangian, the load a dead load), the
-  /// reduced side's static response its own equilibrium through the simulation's body
-  /// model (whatever the body file holds), not the linear K_red solve.
+  /// reduced side's static response its own equilibrium under the body file's internal
+  /// force (whatever the body file holds), not the linear K_red solve.
   bool nonlinear = false;
   std::string material_model = "svk"; ///< nonlinear: svk or neo-hooke
   unsigned int load_increments = 10;  ///< nonlinear statics
@@ -35,12 +35,14 @@ struct CompareResult
   double transient_rel_error = 0;                    ///< max_t |u_r - u_f| / max_t |u_f|
   double full_seconds = 0, reduced_seconds = 0;
   std::string reduced_integrator; ///< which reduced model ran
+  /// The transients' generalised-alpha rho_infinity on the full and the reduced side: 1
+  /// (the trapezoidal rule) unless a nonlinear transient failed with it (then 0.9, 0.7, 0.5).
+  double rho_infinity = 1, reduced_rho_infinity = 1;
 };
 
 /// Static and transient (step load, Newmark average acceleration) response of the full FE
 /// model against the reduced body. The body must be clamped and made from this mesh.
-/// Nonlinear: the reduced static response is the rest state of the clamped reduced body
-/// under the load with every mode critically damped (dynamic relaxation), which for a
-/// linear body file equals K_red^-1 Psi^T f.
+/// Nonlinear: the reduced static response is the reduced body's own equilibrium (Newton in
+/// load increments on its internal force), which for a linear body file is K_red^-1 Psi^T f.
 CompareResult compare_with_full(const CompareSettings& settings);
 } // namespace chipflex::compare

@@ -36,6 +36,9 @@ struct FullResponse
   Eigen::VectorXd static_centroid; ///< mean displacement of the group's nodes, K u = f
   Eigen::MatrixXd transient;       ///< (n_steps + 1) x dim: the same mean under the step load
   double seconds = 0;              ///< assembly and both solutions
+  /// The transient's generalised-alpha rho_infinity: 1 (the trapezoidal rule), lower only
+  /// when the nonlinear model's trapezoidal transient failed (fem/full_response.cc).
+  double rho_infinity = 1;
 };
 
 /// The full model of `body` (its material, element degree and clamp) on the mesh it was

@@ -1,7 +1,6 @@
 #!/bin/sh
 # `chipflex compare --nonlinear`: the same JSON keys as the linear compare; the reduced
-# side's static response by dynamic relaxation equals the linear K_red solve for a linear
-# body file (1e-6); under a small tip load (1 N/m, tip deflection 1.4 % of the length) the
+# side's own static equilibrium equals the linear K_red solve for a linear body file (1e-6); under a small tip load (1 N/m, tip deflection 1.4 % of the length) the
 # nonlinear full model agrees with the linear reduced body within 2 % (measured 0.84 %), under
 # a large one (20 N/m, 26 %) the linear reduced body is more than 10 % off (measured 17 %) and
 # the full model's tip rises (foreshortening: dy > 0, which no linear model shows).
@@ -29,7 +28,7 @@ done
 a=$(first static_reduced_m "$dir/linear.json")
 b=$(first static_reduced_m "$dir/small.json")
 awk -v a="$a" -v b="$b" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-6 * a) }' ||
-  fail "relaxed reduced static $b differs from K_red^-1 Psi^T f = $a"
+  fail "nonlinear-mode reduced static $b differs from K_red^-1 Psi^T f = $a"
 e=$(value static_rel_error "$dir/small.json")
 awk -v e="$e" 'BEGIN { exit !(e < 0.02) }' || fail "small load: static_rel_error $e"
 
@@ -39,4 +38,4 @@ e=$(value static_rel_error "$dir/large.json")
 awk -v e="$e" 'BEGIN { exit !(e > 0.1) }' || fail "large load: static_rel_error $e, expected > 10 %"
 dy=$(second static_full_m "$dir/large.json")
 awk -v y="$dy" 'BEGIN { exit !(y > 1e-3) }' || fail "large load: the full tip does not rise (dy $dy)"
-echo "ok: compare --nonlinear (relaxed static $b = $a; small load $(value static_rel_error "$dir/small.json"), large load $e, tip rise $dy m)"
+echo "ok: compare --nonlinear (reduced static $b = $a; small load $(value static_rel_error "$dir/small.json"), large load $e, tip rise $dy m)"
