@@ -38,8 +38,13 @@ void declare_common(ParameterHandler& prm)
   }
   prm.declare_entry("kind", "none", Selection(kinds), doc + ".");
   prm.declare_entry("name", "", Anything(), "Name in outputs; empty: body<N>.");
-  prm.declare_entry("wall model", "lennard jones", Selection("lennard jones|dummy particles"),
-                    "How the fluid feels the skin.");
+  prm.declare_entry("wall model", "automatic",
+                    Selection("automatic|lennard jones|dummy particles|thin skin"),
+                    "How the fluid feels the skin. thin skin: sided dummy particles that keep "
+                    "the fluid on the skin's two sides apart, for a skin of any thickness "
+                    "down to zero (docs/sph.md, \"Thin skins\"); automatic: thin skin where "
+                    "the skin is open or thinner than 2h - dp (the fluid on its two sides "
+                    "would interact through it), else lennard jones.");
   prm.declare_entry("lennard jones k", "0", Double(0),
                     "Wall force scale per unit mass, m/s^2; 0: derived as for fixed walls.");
   prm.declare_entry("lennard jones R", "0", Double(0), "Cut-off, m; 0: dp.");
@@ -214,8 +219,11 @@ BodyCase<dim> read_body_case(ParameterHandler& prm, const std::string& case_path
     CaseBody<dim> body;
     body.name = context.name;
     body.kind = kind_name;
-    body.wall_model = prm.get("wall model") == "lennard jones" ? sph::WallModel::lennard_jones
-                                                               : sph::WallModel::dummy_particles;
+    const std::string model = prm.get("wall model");
+    body.automatic_wall_model = model == "automatic";
+    body.wall_model = model == "dummy particles" ? sph::WallModel::dummy_particles
+                      : model == "thin skin"     ? sph::WallModel::thin_skin
+                                                 : sph::WallModel::lennard_jones;
     body.lennard_jones = {keys.number("lennard jones k"), keys.number("lennard jones R"),
                           keys.number("lennard jones r0")};
     for (const auto& other : c.bodies)

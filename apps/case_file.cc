@@ -23,6 +23,13 @@ using dealii::Patterns::Selection;
 
 namespace
 {
+sph::WallModel wall_model_of(const std::string& key)
+{
+  return key == "lennard jones" ? sph::WallModel::lennard_jones
+         : key == "thin skin"   ? sph::WallModel::thin_skin
+                                : sph::WallModel::dummy_particles;
+}
+
 void declare_keys(ParameterHandler& prm, int n_bodies)
 {
   prm.declare_entry("dimension", "2", Integer(2, 3), "Space dimension: 2 (per metre depth) or 3.");
@@ -140,8 +147,10 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
       "side of the face normals (`flip` reverses them); relative names are looked "
       "up beside the case file. `barrier`: a permeable barrier (bodies feel it, "
       "the fluid does not; subsection contact).");
-  prm.declare_entry("wall model", "lennard jones", Selection("dummy particles|lennard jones"),
-                    "Model of the extra walls.");
+  prm.declare_entry("wall model", "lennard jones",
+                    Selection("dummy particles|lennard jones|thin skin"),
+                    "Model of the extra walls. thin skin: a wall with fluid on both sides "
+                    "(sided dummy particles; docs/sph.md, \"Thin skins\").");
   prm.declare_entry("fluid passes", "", Anything(),
                     "Numbers (1-based, comma-separated) of the polylines that are permeable "
                     "barriers: bodies feel them (subsection contact), the fluid does not.");
@@ -453,8 +462,7 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
     if (c.tank.open_axis >= dim)
       throw InputError("geometry/tank/open ends", "'" + ends + "' in a 2D case");
   }
-  c.tank.model = prm.get("wall model") == "lennard jones" ? sph::WallModel::lennard_jones
-                                                          : sph::WallModel::dummy_particles;
+  c.tank.model = wall_model_of(prm.get("wall model"));
   c.tank.layers = prm.get_integer("dummy layers");
   c.tank.lennard_jones = {prm.get_double("lennard jones k"), prm.get_double("lennard jones R"),
                           prm.get_double("lennard jones r0")};
@@ -470,8 +478,7 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
       throw InputError("geometry/walls/polylines", "'" + lines[k] + "' needs x, y pairs (>= 2)");
     sph::WallSurface<dim> w;
     w.name = "wall " + std::to_string(k + 1);
-    w.model = prm.get("wall model") == "lennard jones" ? sph::WallModel::lennard_jones
-                                                       : sph::WallModel::dummy_particles;
+    w.model = wall_model_of(prm.get("wall model"));
     for (std::size_t i = 0; i + 1 < v.size(); i += 2)
     {
       Eigen::Matrix<double, dim, 1> x = Eigen::Matrix<double, dim, 1>::Zero();
@@ -504,8 +511,7 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
         read_surface_spec<dim>("geometry/walls/surfaces", surfaces[k], case_path, &barrier);
     sph::WallSurface<dim> w;
     w.name = "surface " + std::to_string(k + 1);
-    w.model = prm.get("wall model") == "lennard jones" ? sph::WallModel::lennard_jones
-                                                       : sph::WallModel::dummy_particles;
+    w.model = wall_model_of(prm.get("wall model"));
     w.vertices = mesh.vertices;
     w.faces = mesh.faces;
     w.fluid_passes = barrier;

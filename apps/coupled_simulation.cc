@@ -4,6 +4,7 @@
 #include "common/hdf5_file.h"
 #include "common/input_error.h"
 #include "coupling/fluid_overlap.h"
+#include "sph/thin_skins.h"
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -35,6 +36,38 @@ std::vector<double> rotation_probe(const Eigen::Matrix<double, dim, dim>& r)
     return {v[0], v[1], v[2]};
   }
 }
+
+/// `wall model = automatic`: a thin skin where the fluid on the skin's two sides would
+/// interact through it. The fluid stands about dp/2 off each face, so pairs across a
+/// skin of thickness t reach each other when t + dp < 2h; a skin thicker than that keeps
+/// the former default (Lennard-Jones), so thick bodies' results do not move.
+template <int dim>
+void choose_wall_model(CaseBody<dim>& b, const sph::FluidParameters<dim>& fluid)
+{
+  sph::WallSurface<dim> skin;
+  b.body->skin().skin_positions(skin.vertices);
+  skin.faces = b.body->skin().skin_faces();
+  const double t = sph::skin_thickness(skin);
+  const double limit = 2 * fluid.smoothing_length() - fluid.particle_spacing;
+  std::ostringstream note;
+  note.precision(3);
+  if (t < limit)
+  {
+    b.wall_model = sph::WallModel::thin_skin;
+    note << "automatic: ";
+    if (t > 0)
+      note << "thickness " << 1e3 * t << " mm";
+    else
+      note << "an open skin";
+    note << " < 2h - dp = " << 1e3 * limit << " mm";
+  }
+  else
+  {
+    b.wall_model = sph::WallModel::lennard_jones;
+    note << "automatic: thickness " << 1e3 * t << " mm >= 2h - dp = " << 1e3 * limit << " mm";
+  }
+  b.wall_model_note = note.str();
+}
 } // namespace
 
 template <int dim>
@@ -64,6 +97,8 @@ CoupledSimulation<dim>::CoupledSimulation(const sph::CaseDescription<dim>& fluid
   cosim_ = std::make_unique<coupling::CoSimulation<dim>>(fluid_.fluid());
   for (auto& b : case_.bodies)
   {
+    if (b.automatic_wall_model)
+      choose_wall_model(b, fluid_.description().fluid);
     cosim_->add_body(*b.body, b.name, b.wall_model, b.lennard_jones);
     fluid_.exclude_from_wall_output(cosim_->fluid_wall_id(cosim_->n_bodies() - 1));
     probe_start_.push_back(b.probe_position());
@@ -307,8 +342,8 @@ std::string CoupledSimulation<dim>::summary() const
   for (const auto& b : case_.bodies)
     s << "\nbody '" << b.name << "': " << b.body->kind() << ", " << b.body->skin().n_skin_nodes()
       << " skin nodes, "
-      << (b.wall_model == sph::WallModel::lennard_jones ? "Lennard-Jones" : "dummy-particle")
-      << " wall"
+      << sph::wall_model_name(b.wall_model) << " wall"
+      << (b.wall_model_note.empty() ? std::string() : " (" + b.wall_model_note + ")")
       << (b.displaced_fluid
               ? ", " + std::to_string(b.displaced_fluid) + " fluid particles inside it removed"
               : std::string());

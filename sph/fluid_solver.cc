@@ -6,6 +6,7 @@
 #include "common/input_error.h"
 #include "sph/dummy_wall_particles.h"
 #include "sph/fluid_solver_impl.h"
+#include "sph/thin_skins.h"
 
 #include <cmath>
 #include <sstream>
@@ -67,6 +68,27 @@ int FluidSolver<dim>::add_wall(const WallSurface<dim>& wall,
     w.lennard_jones = derive_lennard_jones(
         w.lennard_jones, dp, parameters_.reference_density,
         parameters_.reference_density * std::pow(0.1 * parameters_.speed_of_sound, 2), w.name);
+  else if (w.model == WallModel::thin_skin && !w.fluid_passes)
+  {
+    const int layers = w.dummy_layers > 0 ? w.dummy_layers : int(std::ceil(2 * h_ / dp));
+    std::vector<WallAttachment<dim>> attachments;
+    if (dummy_positions.empty())
+      attachments = generate_thin_skin_dummies(w, id, dp, layers);
+    else
+      for (const Vector& x : dummy_positions)
+        attachments.push_back(attach_to_wall(w, id, x));
+    if (!dummy_densities.empty() && dummy_densities.size() != attachments.size())
+      throw std::invalid_argument("FluidSolver::add_wall: one density per dummy particle");
+    for (std::size_t k = 0; k < attachments.size(); ++k)
+    {
+      Vector x, v;
+      attached_state(w, attachments[k], x, v);
+      staged_boundary_x_.push_back(x);
+      staged_boundary_rho_.push_back(dummy_densities.empty() ? parameters_.reference_density
+                                                             : dummy_densities[k]);
+      impl_->attachments.push_back(attachments[k]);
+    }
+  }
   else if (!w.fluid_passes)
   {
     const int layers = w.dummy_layers > 0 ? w.dummy_layers : int(std::ceil(2 * h_ / dp));
@@ -83,9 +105,44 @@ int FluidSolver<dim>::add_wall(const WallSurface<dim>& wall,
       impl_->attachments.push_back(attach_to_wall(w, id, x));
     }
   }
+  impl_->wall_closed.push_back(w.model == WallModel::thin_skin && is_closed(w));
   walls_.push_back(std::move(w));
   vertex_forces_.emplace_back(walls_.back().vertices.size(), Vector::Zero());
+  impl_->guard_forces.emplace_back(walls_.back().vertices.size(), Vector::Zero());
   return int(id);
+}
+
+template <int dim>
+bool FluidSolver<dim>::has_thin_skins() const
+{
+  for (const auto& w : walls_)
+    if (w.model == WallModel::thin_skin && !w.fluid_passes)
+      return true;
+  return false;
+}
+
+template <int dim>
+std::size_t FluidSolver<dim>::n_guarded() const
+{
+  return impl_->n_guarded;
+}
+
+template <int dim>
+void FluidSolver<dim>::update_dummy_sides(std::size_t first, std::size_t last)
+{
+  auto& p = particles_;
+  if (p.skin.empty())
+    return;
+  for (std::size_t i = first; i < last; ++i)
+  {
+    const auto& a = impl_->attachments[p.id[i]];
+    float side[dim] = {}, skin = 0;
+    if (a.wall != WallAttachment<dim>::no_wall && walls_[a.wall].model == WallModel::thin_skin)
+      dummy_side(walls_[a.wall], a, side, skin);
+    for (int d = 0; d < dim; ++d)
+      p.side[d][i] = side[d];
+    p.skin[i] = skin;
+  }
 }
 
 template <int dim>
@@ -112,7 +169,7 @@ void FluidSolver<dim>::finish_setup()
   const std::size_t nb = staged_boundary_x_.size(), nf = staged_fluid_x_.size();
   p.n_boundary = nb;
   n_fluid_created_ = n_fluid_initial_ = nf;
-  p.resize(nb + nf, is_symplectic(parameters_.scheme), !zones_.empty());
+  p.resize(nb + nf, is_symplectic(parameters_.scheme), !zones_.empty(), has_thin_skins());
   for (std::size_t i = 0; i < nb + nf; ++i)
   {
     const bool fluid = i >= nb;
@@ -150,12 +207,13 @@ void FluidSolver<dim>::finish_setup()
         p.velocity[d][i] = p.velocity_previous[d][i] = float(v[d]);
     }
   }
+  update_dummy_sides(0, nb);
   staged_fluid_x_ = {};
   staged_fluid_v_ = {};
   staged_boundary_x_ = {};
   staged_fluid_rho_ = {};
   staged_boundary_rho_ = {};
-  impl_->setup(parameters_);
+  impl_->setup(parameters_, has_thin_skins());
 }
 
 template <int dim>
@@ -169,9 +227,10 @@ void FluidSolver<dim>::move_wall(int id, const std::vector<Vector>& vertices,
   w.vertices = vertices;
   w.velocities = velocities;
   walls_moved_ = true;
-  if (w.model != WallModel::dummy_particles || !set_up_)
+  if (w.model == WallModel::lennard_jones || !set_up_)
     return;
   auto& p = particles_;
+  const bool sided = w.model == WallModel::thin_skin && !p.skin.empty();
   for (std::size_t i = 0; i < p.n_boundary; ++i)
   {
     const auto& a = impl_->attachments[p.id[i]];
@@ -184,6 +243,8 @@ void FluidSolver<dim>::move_wall(int id, const std::vector<Vector>& vertices,
       p.position[d][i] = x[d];
       p.velocity[d][i] = float(v[d]);
     }
+    if (sided)
+      update_dummy_sides(i, i + 1);
   }
   boundary_moved_ = true;
 }
@@ -365,6 +426,10 @@ template <int dim>
 double FluidSolver<dim>::step()
 {
   finish_setup();
+  // The guard's put-backs of the whole step load the skins (sph/thin_skins.h).
+  for (auto& forces : impl_->guard_forces)
+    for (auto& f : forces)
+      f.setZero();
   run_hooks(HookPoint::before_forces);
   if (!zones_.empty())
     transfer_open_boundaries();

@@ -11,7 +11,9 @@
 // Walls (the interface coupling/ uses; all vectors in world coordinates, SI):
 //   add_wall(surface [, dummy positions])  returns the wall id. Lennard-Jones walls act
 //       through their faces; dummy-particle walls get layers of boundary particles
-//       (generated behind the faces, or the given positions), attached to the faces.
+//       (generated behind the faces, or the given positions), attached to the faces;
+//       thin skins get them on the side of each face that needs them and keep the
+//       fluid's sides apart (sph/thin_skins.h).
 //   move_wall(id, vertices, velocities)    new vertex positions and velocities (call it
 //       in a before_forces hook, i.e. for the state at time(), before the step).
 //   wall_vertex_forces(id)                 after each step: the force of the fluid ON
@@ -152,6 +154,11 @@ public:
   void move_wall(int id, const std::vector<Vector>& vertices,
                  const std::vector<Vector>& velocities);
   const std::vector<Vector>& wall_vertex_forces(int id) const { return vertex_forces_.at(id); }
+  /// Some wall is a thin skin (WallModel::thin_skin, sph/thin_skins.h).
+  bool has_thin_skins() const;
+  /// Fluid particles the thin skins' guard has put back on their side so far (each
+  /// one a particle that would have crossed a skin; none in a well-resolved run).
+  std::size_t n_guarded() const;
 
   // --- particles (boundary block first: [0, n_boundary()), fluid after) ------------------
   std::size_t n_particles() const { return particles_.size(); }
@@ -229,6 +236,10 @@ private:
   void prescribe_open_boundaries();
   void freeze_open_boundaries();
   void mirror_wall_velocities();
+  /// Sides of the boundary particles [first, last) from their faces (thin skins).
+  void update_dummy_sides(std::size_t first, std::size_t last);
+  /// Sides of the fluid particles near thin skins, the guard (sph/thin_skins.h).
+  void label_thin_skin_sides();
   float spray_fill_limit() const;
   /// The fluid particle with the largest acceleration of the last force pass.
   std::size_t most_accelerated_particle() const;

@@ -103,6 +103,12 @@ void FluidSolver<dim>::save(Hdf5File& file, const std::string& group) const
     file.write(group + "/open_boundaries/created", zone_created_, {zones_.size()});
     file.write(group + "/open_boundaries/removed", zone_removed_, {zones_.size()});
   }
+  if (!p.skin.empty())
+  {
+    // Thin skins: the side each particle was on (the guard compares the next one with it).
+    file.write(group + "/side", interleave(p.side, n), {n, std::size_t(dim)});
+    file.write(group + "/skin", widen(p.skin), {n});
+  }
   if (parameters_.scheme == TimeScheme::position_verlet && forces_current_)
   {
     // The next step's predictor and dt come from the last pass: a restart must not
@@ -161,7 +167,7 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
     throw InputError(where, "checkpoint has a different particle count than the case (" +
                                 std::to_string(n_fluid_created_ + p.n_boundary) + " particles, " +
                                 std::to_string(p.n_boundary) + " boundary)");
-  p.resize(n, is_symplectic(parameters_.scheme), !zones_.empty());
+  p.resize(n, is_symplectic(parameters_.scheme), !zones_.empty(), has_thin_skins());
   if (file.exists(group + "/position_previous") != !p.position_previous[0].empty())
     throw InputError(where, "checkpoint was written with another time scheme");
   time_ = file.read_double_attribute(group, "time");
@@ -200,6 +206,17 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
         throw InputError(where, "checkpoint names an open boundary the case has not");
       p.zone[i] = std::uint8_t(zone[i]);
     }
+  }
+  if (!p.skin.empty())
+  {
+    if (!file.exists(group + "/skin"))
+      throw InputError(where, "checkpoint was written without the case's thin skins");
+    split(file.read_doubles(group + "/side"), p.side, n, where);
+    const auto skin = file.read_doubles(group + "/skin");
+    if (skin.size() != n)
+      throw InputError(where, "wrong array size in checkpoint");
+    for (std::size_t i = 0; i < n; ++i)
+      p.skin[i] = float(skin[i]);
   }
   zone_created_ = created;
   zone_removed_ = removed;

@@ -10,32 +10,40 @@ namespace chipflex::sph
 {
 namespace
 {
-template <int dim, bool count_fill, class Viscosity, class Diffusion>
+template <int dim, bool count_fill, bool sided, class Viscosity, class Diffusion>
 float run_pass(const ForcePassInput<dim>& in, const PairPolicies& policies, std::size_t nb,
                std::size_t n)
 {
   const auto& visc = policies.get<Viscosity>();
   const auto& diff = policies.get<Diffusion>();
-  return force_pass<dim, count_fill>(in, visc, diff, nb, n);
+  return force_pass<dim, count_fill, sided>(in, visc, diff, nb, n);
 }
 
-template <int dim, bool count_fill, class Viscosity>
+template <int dim, bool count_fill, bool sided, class Viscosity>
 auto select_diffusion(DensityDiffusionModel model)
 {
   switch (model)
   {
   case DensityDiffusionModel::none:
-    return &run_pass<dim, count_fill, Viscosity, NoDensityDiffusion>;
+    return &run_pass<dim, count_fill, sided, Viscosity, NoDensityDiffusion>;
   case DensityDiffusionModel::molteni_colagrossi:
-    return &run_pass<dim, count_fill, Viscosity, MolteniColagrossiDiffusion>;
+    return &run_pass<dim, count_fill, sided, Viscosity, MolteniColagrossiDiffusion>;
   default:
-    return &run_pass<dim, count_fill, Viscosity, FourtakasDiffusion>;
+    return &run_pass<dim, count_fill, sided, Viscosity, FourtakasDiffusion>;
   }
+}
+
+template <int dim, bool count_fill, bool sided>
+auto select_viscosity(const FluidParameters<dim>& p)
+{
+  return p.viscosity == ViscosityModel::artificial
+             ? select_diffusion<dim, count_fill, sided, ArtificialViscosity>(p.density_diffusion)
+             : select_diffusion<dim, count_fill, sided, LaminarViscosity>(p.density_diffusion);
 }
 } // namespace
 
 template <int dim>
-void FluidSolver<dim>::Impl::setup(const FluidParameters<dim>& p)
+void FluidSolver<dim>::Impl::setup(const FluidParameters<dim>& p, bool sided)
 {
   const double h = p.smoothing_length(), c0 = p.speed_of_sound;
   grid.setup(p.domain_min, p.domain_max, 2 * h);
@@ -58,15 +66,14 @@ void FluidSolver<dim>::Impl::setup(const FluidParameters<dim>& p)
   for (int d = 0; d < 3; ++d)
     policies.fourtakas.g_over_c2[d] =
         d < dim ? float(p.reference_density * p.gravity[d] / (c0 * c0)) : 0.0f;
-  // The spray filling costs ~8 % of the force loop: counted only where it is used.
-  if (p.cut_spray_tension)
-    pass = p.viscosity == ViscosityModel::artificial
-               ? select_diffusion<dim, true, ArtificialViscosity>(p.density_diffusion)
-               : select_diffusion<dim, true, LaminarViscosity>(p.density_diffusion);
+  // The spray filling costs ~8 % of the force loop, the thin skins' visibility mask
+  // more: each is compiled in only where it is used.
+  if (sided)
+    pass = p.cut_spray_tension ? select_viscosity<dim, true, true>(p)
+                               : select_viscosity<dim, false, true>(p);
   else
-    pass = p.viscosity == ViscosityModel::artificial
-               ? select_diffusion<dim, false, ArtificialViscosity>(p.density_diffusion)
-               : select_diffusion<dim, false, LaminarViscosity>(p.density_diffusion);
+    pass = p.cut_spray_tension ? select_viscosity<dim, true, false>(p)
+                               : select_viscosity<dim, false, false>(p);
 }
 
 template <int dim>
@@ -115,8 +122,35 @@ void FluidSolver<dim>::sort_and_bin()
 }
 
 template <int dim>
+void FluidSolver<dim>::label_thin_skin_sides()
+{
+  auto& im = *impl_;
+  if (walls_moved_ || !im.thin_skins_binned)
+  {
+    std::vector<const WallSurface<dim>*> thin(walls_.size(), nullptr);
+    for (std::size_t w = 0; w < walls_.size(); ++w)
+      if (walls_[w].model == WallModel::thin_skin && !walls_[w].fluid_passes)
+        thin[w] = &walls_[w];
+    // A fluid particle needs its side where a dummy particle of either side can reach
+    // it: the kernel support plus the layers' depth.
+    int layers = 0;
+    for (const auto& w : walls_)
+      layers = std::max(layers, w.dummy_layers > 0 ? w.dummy_layers
+                                                   : int(std::ceil(2 * h_ / parameters_.particle_spacing)));
+    const double reach = 2 * h_ + layers * parameters_.particle_spacing;
+    im.thin_skins.bin(thin, im.wall_closed, im.grid, reach);
+    im.thin_skins_binned = true;
+  }
+  im.n_guarded += im.thin_skins.label_fluid(particles_, particles_.n_boundary, particles_.size(),
+                                            im.grid, 0.25 * parameters_.particle_spacing, mass_,
+                                            dt_, im.guard_forces);
+}
+
+template <int dim>
 void FluidSolver<dim>::force_pass()
 {
+  if (!particles_.skin.empty())
+    label_thin_skin_sides();
   sort_and_bin();
   if (!zones_.empty())
     prescribe_open_boundaries();
@@ -154,12 +188,15 @@ void FluidSolver<dim>::force_pass()
   in.mass_fluid = in.mass_boundary = mass;
   in.density_rate = p.density_rate.data();
   in.fill = p.fill.data();
+  for (int d = 0; d < dim; ++d)
+    in.side[d] = p.side[d].data();
+  in.skin = p.skin.data();
   in.fill_factor = im.fill_factor;
   dot_rr2_max_ = im.pass(in, im.policies, nb, n);
 
-  for (auto& forces : vertex_forces_)
-    for (auto& f : forces)
-      f.setZero();
+  for (std::size_t w = 0; w < vertex_forces_.size(); ++w)
+    for (std::size_t k = 0; k < vertex_forces_[w].size(); ++k)
+      vertex_forces_[w][k] = im.guard_forces[w][k];
   // Dummy-wall reactions, in boundary particle order (deterministic).
   for (std::size_t i = 0; i < nb; ++i)
   {
@@ -223,8 +260,8 @@ void FluidSolver<dim>::force_pass()
     freeze_open_boundaries();
 }
 
-template void FluidSolver<2>::Impl::setup(const FluidParameters<2>&);
-template void FluidSolver<3>::Impl::setup(const FluidParameters<3>&);
+template void FluidSolver<2>::Impl::setup(const FluidParameters<2>&, bool);
+template void FluidSolver<3>::Impl::setup(const FluidParameters<3>&, bool);
 template void FluidSolver<2>::sort_and_bin();
 template void FluidSolver<3>::sort_and_bin();
 template void FluidSolver<2>::force_pass();

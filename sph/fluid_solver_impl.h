@@ -10,6 +10,7 @@
 #include "sph/lennard_jones_wall.h"
 #include "sph/neighbour_grid.h"
 #include "sph/tait_equation_of_state.h"
+#include "sph/thin_skins.h"
 #include "sph/viscosity_models.h"
 #include "sph/wendland_kernel.h"
 
@@ -50,13 +51,20 @@ struct FluidSolver<dim>::Impl
   std::vector<double> scratch;
   std::vector<WallAttachment<dim>> attachments; ///< by boundary particle id
   LennardJonesWalls<dim> lennard_jones;
+  ThinSkins<dim> thin_skins;
+  std::vector<char> wall_closed; ///< by wall: a closed thin skin
+  bool thin_skins_binned = false;
+  /// Force of the thin skins' guard on each wall vertex in this pass (sph/thin_skins.h).
+  std::vector<std::vector<Eigen::Matrix<double, dim, 1>>> guard_forces;
+  std::size_t n_guarded = 0; ///< fluid particles put back on their side so far
   TaitEquationOfState eos{1000, 10, 7};
   PairPolicies policies;
   PassFunction pass = nullptr;
   float kernel_factor = 0;
   float fill_factor = 0;
 
-  void setup(const FluidParameters<dim>& p);
+  /// sided: compile the pass with the thin skins' visibility mask.
+  void setup(const FluidParameters<dim>& p, bool sided);
   std::size_t memory_bytes() const
   {
     return (fluid_start.capacity() + boundary_start.capacity() + permutation.capacity()) * 4 +

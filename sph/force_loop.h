@@ -15,6 +15,8 @@
 // relative to a full lattice support: the filling, 1 inside the fluid or at a wall, 0.6
 // on a flat free surface, 2/21 for a pair however close (2D, h = sqrt(2) dp). It tells
 // spray from fluid; counted only where the spray treatment is on (count_fill).
+// With thin skins (sided, sph/thin_skins.h) a pair of one skin's opposite sides,
+// skin_i = skin_j != 0 and side_i . side_j < -1/2, is masked out of every sum.
 
 #include "sph/density_diffusion.h"
 #include "sph/neighbour_grid.h"
@@ -41,6 +43,8 @@ struct ForcePassInput
   float inverse_h, kernel_factor;
   float fill_factor; ///< 1 / (particles in a full lattice support)
   float mass_fluid, mass_boundary;
+  const float* side[dim]; ///< sided only
+  const float* skin;      ///< sided only
   float* a[dim];
   float* density_rate;
   float* fill;
@@ -48,11 +52,18 @@ struct ForcePassInput
 
 namespace detail
 {
-template <int dim, bool neighbour_is_fluid, bool count_fill, class Viscosity, class Diffusion>
+template <int dim, bool neighbour_is_fluid, bool count_fill, bool sided, class Viscosity,
+          class Diffusion>
 inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
                    std::uint32_t jb, std::uint32_t je, const double (&xi)[3], const float (&vi)[3],
-                   float rhoi, float pti, float mj, float (&acc)[5], float& dot_rr2_max)
+                   float rhoi, float pti, const float (&si)[4], float mj, float (&acc)[5],
+                   float& dot_rr2_max)
 {
+  const float* const s0 = sided ? in.side[0] : nullptr;
+  const float* const s1 = sided ? in.side[1] : nullptr;
+  const float* const s2 = sided ? in.side[dim - 1] : nullptr;
+  const float* const sk = sided ? in.skin : nullptr;
+  const float si0 = si[0], si1 = si[1], si2 = si[2], ski = si[3];
   const double* const x0 = in.x[0];
   const double* const x1 = in.x[1];
   const double* const x2 = in.x[dim - 1];
@@ -74,7 +85,12 @@ inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const D
     const float dx1 = float(xi1 - x1[j]);
     const float dx2 = dim == 3 ? float(xi2 - x2[j]) : 0.0f;
     const float r2 = dx0 * dx0 + dx1 * dx1 + dx2 * dx2;
-    const float t = std::max(0.0f, 1.0f - 0.5f * inv_h * std::sqrt(r2));
+    float t = std::max(0.0f, 1.0f - 0.5f * inv_h * std::sqrt(r2));
+    if constexpr (sided)
+    {
+      const float facing = si0 * s0[j] + si1 * s1[j] + (dim == 3 ? si2 * s2[j] : 0.0f);
+      t = (sk[j] == ski && facing < -0.5f) ? 0.0f : t; // a select, not a branch
+    }
     const float t3 = t * t * t;
     const float fac = kf * t3;
     if constexpr (count_fill)
@@ -131,7 +147,8 @@ inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const D
 /// Gathers for particles [first, last); call inside a parallel region (orphaned `omp
 /// for`). Dynamic chunks: each particle's sums do not depend on which thread computes
 /// them, and a thread descheduled on a busy machine does not hold the others up.
-template <int dim, bool target_is_fluid, bool count_fill, class Viscosity, class Diffusion>
+template <int dim, bool target_is_fluid, bool count_fill, bool sided, class Viscosity,
+          class Diffusion>
 float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
                     std::size_t first, std::size_t last)
 {
@@ -141,18 +158,26 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
     double xi[3] = {in.x[0][i], in.x[1][i], dim == 3 ? in.x[dim - 1][i] : 0.0};
     float vi[3] = {in.v[0][i], in.v[1][i], dim == 3 ? in.v[dim - 1][i] : 0.0f};
     const float rhoi = in.rho[i], pti = in.pressure_term[i];
+    float si[4] = {0, 0, 0, 0};
+    if constexpr (sided)
+    {
+      for (int d = 0; d < dim; ++d)
+        si[d] = in.side[d][i];
+      si[3] = in.skin[i];
+    }
     float acc[5] = {0, 0, 0, 0, 0};
     float vmax = 0;
     const std::int64_t c = in.cell[i];
     for (int r = 0; r < NeighbourGrid<dim>::n_rows; ++r)
     {
       const std::int64_t base = c + in.rows[r];
-      gather<dim, true, count_fill>(in, visc, diff, in.fluid_start[base], in.fluid_start[base + 3],
-                                    xi, vi, rhoi, pti, in.mass_fluid, acc, vmax);
+      gather<dim, true, count_fill, sided>(in, visc, diff, in.fluid_start[base],
+                                           in.fluid_start[base + 3], xi, vi, rhoi, pti, si,
+                                           in.mass_fluid, acc, vmax);
       if constexpr (target_is_fluid)
-        gather<dim, false, count_fill>(in, visc, diff, in.boundary_start[base],
-                                       in.boundary_start[base + 3], xi, vi, rhoi, pti,
-                                       in.mass_boundary, acc, vmax);
+        gather<dim, false, count_fill, sided>(in, visc, diff, in.boundary_start[base],
+                                              in.boundary_start[base + 3], xi, vi, rhoi, pti, si,
+                                              in.mass_boundary, acc, vmax);
     }
     for (int d = 0; d < dim; ++d)
       in.a[d][i] = acc[d];
@@ -183,15 +208,17 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
 /// reaction per unit mass (no density diffusion, as in DualSPHysics); fluid particles
 /// [n_boundary, n) their accelerations (without gravity and walls) and density rates.
 /// Returns max v_ij.r_ij/(r^2+eta2) over candidate pairs, for the time step.
-template <int dim, bool count_fill, class Viscosity, class Diffusion>
+template <int dim, bool count_fill, bool sided, class Viscosity, class Diffusion>
 float force_pass(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
                  std::size_t n_boundary, std::size_t n)
 {
   float dot_rr2_max = 0;
 #pragma omp parallel if (n > parallel_threshold)
   {
-    detail::particle_loop<dim, false, false>(in, visc, NoDensityDiffusion{}, 0, n_boundary);
-    const float m = detail::particle_loop<dim, true, count_fill>(in, visc, diff, n_boundary, n);
+    detail::particle_loop<dim, false, false, sided>(in, visc, NoDensityDiffusion{}, 0,
+                                                    n_boundary);
+    const float m =
+        detail::particle_loop<dim, true, count_fill, sided>(in, visc, diff, n_boundary, n);
 #pragma omp critical(chipflex_sph_force_pass_max)
     dot_rr2_max = std::max(dot_rr2_max, m); // a maximum: order-independent
   }

@@ -48,6 +48,13 @@ struct ParticleArrays
   /// particle of zone k (sph/open_boundary.h), plus zone_respawned for an inlet particle
   /// that has flowed back into its buffer (its replacement exists already).
   std::vector<std::uint8_t> zone;
+  /// Thin skins only (empty otherwise; sph/thin_skins.h): the side of its nearest thin
+  /// skin a particle is on, as a unit vector (from the skin's nearest point to a fluid
+  /// particle; the normal of the face a dummy particle serves), and that skin's wall id
+  /// + 1 (0: no thin skin within reach). A pair on opposite sides of one skin does not
+  /// interact.
+  std::array<std::vector<float>, dim> side;
+  std::vector<float> skin;
 
   // Results of the last force pass (not permuted: recomputed after every sort).
   std::array<std::vector<float>, dim> acceleration; ///< boundary: reaction force / mass
@@ -60,7 +67,8 @@ struct ParticleArrays
   std::size_t size() const { return density.size(); }
   std::size_t n_fluid() const { return size() - n_boundary; }
 
-  void resize(std::size_t n, bool with_previous_positions, bool with_zones = false)
+  void resize(std::size_t n, bool with_previous_positions, bool with_zones = false,
+              bool with_sides = false)
   {
     for (int d = 0; d < dim; ++d)
     {
@@ -69,7 +77,9 @@ struct ParticleArrays
       velocity_previous[d].resize(n);
       position_previous[d].resize(with_previous_positions ? n : 0);
       acceleration[d].resize(n);
+      side[d].resize(with_sides ? n : 0);
     }
+    skin.resize(with_sides ? n : 0);
     density.resize(n);
     density_previous.resize(n);
     id.resize(n);
@@ -94,7 +104,11 @@ struct ParticleArrays
       apply(velocity_previous[d], first, permutation, scratch);
       if (!position_previous[d].empty())
         apply(position_previous[d], first, permutation, scratch);
+      if (!side[d].empty())
+        apply(side[d], first, permutation, scratch);
     }
+    if (!skin.empty())
+      apply(skin, first, permutation, scratch);
     apply(density, first, permutation, scratch);
     apply(density_previous, first, permutation, scratch);
     apply(id, first, permutation, scratch);
@@ -116,7 +130,11 @@ struct ParticleArrays
       if (!position_previous[d].empty())
         position_previous[d].push_back(x[d]);
       acceleration[d].push_back(0.0f);
+      if (!skin.empty())
+        side[d].push_back(0.0f);
     }
+    if (!skin.empty())
+      skin.push_back(0.0f);
     density.push_back(rho);
     density_previous.push_back(rho);
     id.push_back(new_id);
@@ -142,7 +160,9 @@ struct ParticleArrays
       erase(velocity_previous[d], sorted_indices);
       erase(position_previous[d], sorted_indices);
       erase(acceleration[d], sorted_indices);
+      erase(side[d], sorted_indices);
     }
+    erase(skin, sorted_indices);
     erase(density, sorted_indices);
     erase(density_previous, sorted_indices);
     erase(id, sorted_indices);
@@ -159,16 +179,16 @@ struct ParticleArrays
     std::size_t b = 0;
     for (int d = 0; d < dim; ++d)
       b += bytes(position[d]) + bytes(velocity[d]) + bytes(velocity_previous[d]) +
-           bytes(position_previous[d]) + bytes(acceleration[d]);
+           bytes(position_previous[d]) + bytes(acceleration[d]) + bytes(side[d]);
     return b + bytes(density) + bytes(density_previous) + bytes(id) + bytes(fill) + bytes(zone) +
-           bytes(density_rate) + bytes(pressure_term) + bytes(volume) + bytes(cell);
+           bytes(skin) + bytes(density_rate) + bytes(pressure_term) + bytes(volume) + bytes(cell);
   }
 
 private:
   template <typename T>
   static void erase(std::vector<T>& a, const std::vector<std::size_t>& sorted_indices)
   {
-    if (a.empty()) // position_previous outside the symplectic schemes
+    if (a.empty()) // position_previous outside the symplectic schemes, sides, zones
       return;
     std::size_t out = sorted_indices.front(), next = 0;
     for (std::size_t i = out; i < a.size(); ++i)

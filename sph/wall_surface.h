@@ -16,8 +16,19 @@ namespace chipflex::sph
 enum class WallModel
 {
   lennard_jones,  ///< the seed paper's modified Lennard-Jones force (docs/sph.md)
-  dummy_particles ///< layers of dummy particles that move with the surface
+  dummy_particles, ///< layers of dummy particles that move with the surface
+  /// A skin of any thickness down to zero (an open polyline or surface, or a closed
+  /// skin thinner than the kernel) with fluid on one or both sides: sided dummy
+  /// particles and a visibility mask (sph/thin_skins.h, docs/sph.md "Thin skins").
+  thin_skin
 };
+
+inline const char* wall_model_name(WallModel model)
+{
+  return model == WallModel::lennard_jones     ? "Lennard-Jones"
+         : model == WallModel::dummy_particles ? "dummy-particle"
+                                               : "thin-skin";
+}
 
 /// Parameters of the modified Lennard-Jones wall force
 ///   F(d) = k ((R-d)^4 - (R-r0)^2 (R-d)^2) / (R^2 r0 (2R - r0))  for d <= R, else 0,

@@ -1,0 +1,350 @@
+#include "sph/thin_skins.h"
+
+#include "sph/wall_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace chipflex::sph
+{
+template <int dim>
+bool is_closed(const WallSurface<dim>& wall)
+{
+  if (wall.faces.empty())
+    return false;
+  // 2D: every vertex ends two segments; 3D: every edge borders two triangles.
+  std::map<std::array<int, dim - 1>, int> count;
+  for (const auto& f : wall.faces)
+  {
+    if constexpr (dim == 2)
+    {
+      ++count[{f[0]}];
+      ++count[{f[1]}];
+    }
+    else
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = f[k], b = f[(k + 1) % 3];
+        ++count[{std::min(a, b), std::max(a, b)}];
+      }
+  }
+  for (const auto& [key, n] : count)
+    if (n != 2)
+      return false;
+  return true;
+}
+
+template <int dim>
+double skin_thickness(const WallSurface<dim>& wall)
+{
+  using Vector = Eigen::Matrix<double, dim, 1>;
+  if (!is_closed(wall))
+    return 0;
+  double thinnest = std::numeric_limits<double>::infinity();
+  for (std::size_t f = 0; f < wall.faces.size(); ++f)
+  {
+    Vector centre = Vector::Zero();
+    for (int k = 0; k < dim; ++k)
+      centre += wall.vertices[wall.faces[f][k]] / double(dim);
+    const Vector n = face_normal(wall, int(f));
+    for (std::size_t g = 0; g < wall.faces.size(); ++g)
+    {
+      if (g == f)
+        continue;
+      const Vector ng = face_normal(wall, int(g));
+      const double cosine = ng.dot(n);
+      if (std::abs(cosine) < 1e-12)
+        continue;
+      // The ray centre - t n meets face g's plane at t.
+      const double t = ng.dot(centre - wall.vertices[wall.faces[g][0]]) / cosine;
+      if (!(t > 0) || t >= thinnest)
+        continue;
+      const FaceProjection<dim> hit = project_on_face(wall, int(g), Vector(centre - t * n));
+      bool on_face = true;
+      for (double w : hit.weights)
+        on_face = on_face && w >= -1e-9;
+      if (on_face)
+        thinnest = t;
+    }
+  }
+  return thinnest;
+}
+
+template <int dim>
+std::vector<WallAttachment<dim>> generate_thin_skin_dummies(const WallSurface<dim>& wall,
+                                                            std::uint32_t wall_id, double dp,
+                                                            int layers)
+{
+  using Vector = Eigen::Matrix<double, dim, 1>;
+  std::vector<WallAttachment<dim>> out;
+  std::vector<Vector> points, served;
+  std::map<std::array<long, dim>, std::vector<std::size_t>> buckets;
+  auto key = [&](const Vector& x)
+  {
+    std::array<long, dim> k;
+    for (int d = 0; d < dim; ++d)
+      k[d] = long(std::floor(x[d] / dp));
+    return k;
+  };
+  // Drops a point within dp/2 of an earlier one that serves the same side (the layers of
+  // neighbouring faces overlap at convex corners); the other side's layers may pass.
+  auto add = [&](std::uint32_t face, const std::array<double, dim>& weights, double offset)
+  {
+    const Vector x = point_on_face(wall, int(face), weights, offset);
+    const Vector n = (offset < 0 ? 1.0 : -1.0) * face_normal(wall, int(face));
+    const auto k = key(x);
+    for (int i = 0; i < (dim == 2 ? 9 : 27); ++i)
+    {
+      auto m = k;
+      m[0] += i % 3 - 1;
+      m[1] += (i / 3) % 3 - 1;
+      if constexpr (dim == 3)
+        m[2] += i / 9 - 1;
+      const auto it = buckets.find(m);
+      if (it != buckets.end())
+        for (auto j : it->second)
+          if ((points[j] - x).norm() < 0.5 * dp && served[j].dot(n) > 0.5)
+            return;
+    }
+    buckets[k].push_back(points.size());
+    points.push_back(x);
+    served.push_back(n);
+    WallAttachment<dim> a;
+    a.wall = wall_id;
+    a.face = face;
+    a.weights = weights;
+    a.offset = offset;
+    out.push_back(a);
+  };
+  const bool both_sides = !is_closed(wall);
+  for (std::uint32_t f = 0; f < wall.faces.size(); ++f)
+  {
+    const auto& face = wall.faces[f];
+    for (int side = 0; side < (both_sides ? 2 : 1); ++side)
+    {
+      const double sign = side == 0 ? -1 : 1;
+      if constexpr (dim == 2)
+      {
+        const Vector a = wall.vertices[face[0]], b = wall.vertices[face[1]];
+        const int n = std::max(1, int(std::lround((b - a).norm() / dp)));
+        for (int l = 0; l < layers; ++l)
+          for (int s = 0; s < n; ++s)
+          {
+            const double t = (s + 0.5) / n;
+            add(f, {1 - t, t}, sign * (l + 0.5) * dp);
+          }
+      }
+      else
+      {
+        const Vector a = wall.vertices[face[0]], b = wall.vertices[face[1]],
+                     c = wall.vertices[face[2]];
+        const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+        const int n = std::max(1, int(std::lround(longest / dp)));
+        for (int l = 0; l < layers; ++l)
+          for (int i = 0; i < n; ++i)
+            for (int j = 0; i + j < n; ++j)
+            {
+              const double u = (i + 1.0 / 3) / n, v = (j + 1.0 / 3) / n;
+              add(f, {1 - u - v, u, v}, sign * (l + 0.5) * dp);
+            }
+      }
+    }
+  }
+  return out;
+}
+
+template <int dim>
+void dummy_side(const WallSurface<dim>& wall, const WallAttachment<dim>& a, float (&side)[dim],
+                float& skin)
+{
+  const auto n = face_normal(wall, int(a.face));
+  const double sign = a.offset < 0 ? 1 : -1; // behind the face: it serves the front
+  for (int d = 0; d < dim; ++d)
+    side[d] = float(sign * n[d]);
+  skin = float(a.wall + 1);
+}
+
+template <int dim>
+void ThinSkins<dim>::bin(const std::vector<const WallSurface<dim>*>& walls,
+                         const std::vector<char>& closed, const NeighbourGrid<dim>& grid,
+                         double reach)
+{
+  walls_ = walls;
+  closed_ = closed;
+  faces_.clear();
+  for (std::uint32_t w = 0; w < walls.size(); ++w)
+    if (walls[w])
+      for (std::uint32_t f = 0; f < walls[w]->faces.size(); ++f)
+        faces_.push_back({w, f});
+  start_.assign(grid.n_cells() + 1, 0);
+  entries_.clear();
+  if (faces_.empty())
+    return;
+  auto for_each = [&](auto&& f)
+  {
+    for (std::uint32_t k = 0; k < faces_.size(); ++k)
+    {
+      const auto& wall = *walls_[faces_[k].wall];
+      const auto& face = wall.faces[faces_[k].face];
+      Vector lo = wall.vertices[face[0]], hi = lo;
+      for (int v = 1; v < dim; ++v)
+      {
+        lo = lo.cwiseMin(wall.vertices[face[v]]);
+        hi = hi.cwiseMax(wall.vertices[face[v]]);
+      }
+      grid.for_cells_overlapping(lo.array() - reach, hi.array() + reach,
+                                 [&](std::uint32_t c) { f(c, k); });
+    }
+  };
+  for_each([&](std::uint32_t c, std::uint32_t) { ++start_[c + 1]; });
+  for (std::size_t c = 0; c + 1 < start_.size(); ++c)
+    start_[c + 1] += start_[c];
+  entries_.resize(start_.back());
+  std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
+  for_each([&](std::uint32_t c, std::uint32_t k) { entries_[next[c]++] = k; });
+}
+
+template <int dim>
+std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t first,
+                                        std::size_t last, const NeighbourGrid<dim>& grid,
+                                        double guard_distance, double mass, double dt,
+                                        std::vector<std::vector<Vector>>& guard_forces)
+{
+  crossed_.assign(last - first, 0);
+  std::size_t n_crossed = 0;
+  // The nearest face of the thin skins binned in x's cell: (entry, closest point).
+  auto nearest = [&](const Vector& x, std::uint32_t& best, ClosestPoint<dim>& closest)
+  {
+    const std::uint32_t c = grid.cell_of(x.data());
+    if (c == NeighbourGrid<dim>::outside || start_[c] == start_[c + 1])
+      return false;
+    double best_d2 = std::numeric_limits<double>::infinity();
+    for (std::uint32_t e = start_[c]; e < start_[c + 1]; ++e)
+    {
+      const Face& f = faces_[entries_[e]];
+      const ClosestPoint<dim> cp = closest_point_on_face(*walls_[f.wall], int(f.face), x);
+      if (cp.distance2 < best_d2)
+        best_d2 = cp.distance2, best = entries_[e], closest = cp;
+    }
+    return true;
+  };
+#pragma omp parallel for schedule(dynamic, 1024) reduction(+ : n_crossed)                          \
+    if (last - first > parallel_threshold)
+  for (std::size_t i = first; i < last; ++i)
+  {
+    Vector x;
+    for (int d = 0; d < dim; ++d)
+      x[d] = p.position[d][i];
+    std::uint32_t k = 0;
+    ClosestPoint<dim> cp;
+    if (!nearest(x, k, cp))
+    {
+      for (int d = 0; d < dim; ++d)
+        p.side[d][i] = 0;
+      p.skin[i] = 0;
+      continue;
+    }
+    const Face& f = faces_[k];
+    const double distance = std::sqrt(cp.distance2);
+    Vector s = distance > 0 ? Vector((x - cp.point) / distance)
+                            : face_normal(*walls_[f.wall], int(f.face));
+    const float skin = float(f.wall + 1);
+    double facing = 0;
+    for (int d = 0; d < dim; ++d)
+      facing += double(p.side[d][i]) * s[d];
+    if (p.skin[i] == skin && facing < -0.5 && cp.inside)
+    {
+      crossed_[i - first] = 1; // put back below, in particle order
+      ++n_crossed;
+      continue;
+    }
+    for (int d = 0; d < dim; ++d)
+      p.side[d][i] = float(s[d]);
+    p.skin[i] = skin;
+  }
+  if (n_crossed == 0)
+    return 0;
+  for (std::size_t i = first; i < last; ++i)
+  {
+    if (!crossed_[i - first])
+      continue;
+    Vector x, old_side;
+    for (int d = 0; d < dim; ++d)
+      x[d] = p.position[d][i], old_side[d] = p.side[d][i];
+    std::uint32_t k = 0;
+    ClosestPoint<dim> cp;
+    nearest(x, k, cp);
+    const std::uint32_t w = faces_[k].wall;
+    Vector n = face_normal(*walls_[w], int(faces_[k].face));
+    if (closed_[w])
+    {
+      // A closed skin: back in front of the nearest face that faces the old side (the
+      // particle may have passed through the whole skin).
+      const std::uint32_t c = grid.cell_of(x.data());
+      double best = std::numeric_limits<double>::infinity();
+      for (std::uint32_t e = start_[c]; e < start_[c + 1]; ++e)
+      {
+        const Face& f = faces_[entries_[e]];
+        if (f.wall != w || face_normal(*walls_[w], int(f.face)).dot(old_side) <= 0.5)
+          continue;
+        const ClosestPoint<dim> q = closest_point_on_face(*walls_[w], int(f.face), x);
+        if (q.distance2 < best)
+          best = q.distance2, k = entries_[e], cp = q;
+      }
+      n = face_normal(*walls_[w], int(faces_[k].face));
+    }
+    else if (n.dot(old_side) < 0)
+      n = -n; // towards the side it came from
+    const WallSurface<dim>& wall = *walls_[w];
+    const auto& face = wall.faces[faces_[k].face];
+    Vector v_wall = Vector::Zero();
+    for (int j = 0; j < dim; ++j)
+      v_wall += cp.weights[j] * wall.velocities[face[j]];
+    const Vector x_new = cp.point + guard_distance * n;
+    Vector dv = Vector::Zero();
+    for (int d = 0; d < dim; ++d)
+    {
+      p.position[d][i] = x_new[d];
+      if (!p.position_previous[d].empty())
+        p.position_previous[d][i] = x_new[d];
+    }
+    // Strip the approach towards the face from both velocities the integrators use.
+    for (auto* velocity : {&p.velocity, &p.velocity_previous})
+    {
+      Vector v;
+      for (int d = 0; d < dim; ++d)
+        v[d] = (*velocity)[d][i];
+      const double approach = (v - v_wall).dot(n);
+      if (approach < 0)
+      {
+        const Vector change = -approach * n;
+        for (int d = 0; d < dim; ++d)
+          (*velocity)[d][i] = float(v[d] + change[d]);
+        if (velocity == &p.velocity)
+          dv = change;
+      }
+    }
+    for (int d = 0; d < dim; ++d)
+      p.side[d][i] = float(n[d]);
+    if (dt > 0)
+      for (int j = 0; j < dim; ++j)
+        guard_forces[faces_[k].wall][face[j]] -= cp.weights[j] * mass * dv / dt;
+  }
+  return n_crossed;
+}
+
+template bool is_closed(const WallSurface<2>&);
+template bool is_closed(const WallSurface<3>&);
+template double skin_thickness(const WallSurface<2>&);
+template double skin_thickness(const WallSurface<3>&);
+template std::vector<WallAttachment<2>> generate_thin_skin_dummies(const WallSurface<2>&,
+                                                                   std::uint32_t, double, int);
+template std::vector<WallAttachment<3>> generate_thin_skin_dummies(const WallSurface<3>&,
+                                                                   std::uint32_t, double, int);
+template void dummy_side(const WallSurface<2>&, const WallAttachment<2>&, float (&)[2], float&);
+template void dummy_side(const WallSurface<3>&, const WallAttachment<3>&, float (&)[3], float&);
+template class ThinSkins<2>;
+template class ThinSkins<3>;
+} // namespace chipflex::sph
