@@ -156,10 +156,15 @@ std::string FluidSimulation<dim>::summary() const
 template <int dim>
 std::string FluidSimulation<dim>::flow_summary() const
 {
-  if (fluid_->n_open_boundaries() == 0)
-    return "";
-  return " inflow_particles=" + std::to_string(fluid_->n_inflow()) +
+  std::string s;
+  if (fluid_->n_open_boundaries() > 0)
+    s += " inflow_particles=" + std::to_string(fluid_->n_inflow()) +
          " outflow_particles=" + std::to_string(fluid_->n_outflow());
+  // Thin skins: fluid particles the guard put back on their side (each would have
+  // crossed a skin; sph/thin_skins.h).
+  if (fluid_->has_thin_skins())
+    s += " guarded_particles=" + std::to_string(fluid_->n_guarded());
+  return s;
 }
 
 template <int dim>

@@ -108,6 +108,7 @@ void FluidSolver<dim>::save(Hdf5File& file, const std::string& group) const
     // Thin skins: the side each particle was on (the guard compares the next one with it).
     file.write(group + "/side", interleave(p.side, n), {n, std::size_t(dim)});
     file.write(group + "/skin", widen(p.skin), {n});
+    file.write_attribute(group, "n_guarded", std::int64_t(impl_->n_guarded));
   }
   if (parameters_.scheme == TimeScheme::position_verlet && forces_current_)
   {
@@ -217,6 +218,7 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
       throw InputError(where, "wrong array size in checkpoint");
     for (std::size_t i = 0; i < n; ++i)
       p.skin[i] = float(skin[i]);
+    impl_->n_guarded = std::size_t(file.read_integer_attribute(group, "n_guarded"));
   }
   zone_created_ = created;
   zone_removed_ = removed;

@@ -140,6 +140,14 @@ void FluidSolver<dim>::label_thin_skin_sides()
     const double reach = 2 * h_ + layers * parameters_.particle_spacing;
     im.thin_skins.bin(thin, im.wall_closed, im.grid, reach);
     im.thin_skins_binned = true;
+    if (im.thin_dummy.empty())
+    {
+      im.thin_dummy.assign(im.attachments.size(), 0);
+      for (std::size_t k = 0; k < im.attachments.size(); ++k)
+        im.thin_dummy[k] = im.attachments[k].wall != WallAttachment<dim>::no_wall &&
+                           thin[im.attachments[k].wall] != nullptr;
+    }
+    im.thin_skins.label_boundary(particles_, im.grid, im.thin_dummy);
   }
   im.n_guarded += im.thin_skins.label_fluid(particles_, particles_.n_boundary, particles_.size(),
                                             im.grid, 0.25 * parameters_.particle_spacing, mass_,

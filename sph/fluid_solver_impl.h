@@ -53,6 +53,7 @@ struct FluidSolver<dim>::Impl
   LennardJonesWalls<dim> lennard_jones;
   ThinSkins<dim> thin_skins;
   std::vector<char> wall_closed; ///< by wall: a closed thin skin
+  std::vector<char> thin_dummy;  ///< by boundary particle id: a thin skin's own
   bool thin_skins_binned = false;
   /// Force of the thin skins' guard on each wall vertex in this pass (sph/thin_skins.h).
   std::vector<std::vector<Eigen::Matrix<double, dim, 1>>> guard_forces;

@@ -15,8 +15,10 @@
 // relative to a full lattice support: the filling, 1 inside the fluid or at a wall, 0.6
 // on a flat free surface, 2/21 for a pair however close (2D, h = sqrt(2) dp). It tells
 // spray from fluid; counted only where the spray treatment is on (count_fill).
-// With thin skins (sided, sph/thin_skins.h) a pair of one skin's opposite sides,
-// skin_i = skin_j != 0 and side_i . side_j < -1/2, is masked out of every sum.
+// With thin skins (sided, sph/thin_skins.h) a pair near one skin (skin_i = skin_j != 0)
+// is masked out of every sum unless its sides agree: side_i . side_j >= -1/2 for two
+// fluid particles (not on opposite sides), >= 1/2 for a fluid and a boundary particle
+// (the dummy particle serves the fluid particle's side, not a face beside it).
 
 #include "sph/density_diffusion.h"
 #include "sph/neighbour_grid.h"
@@ -56,14 +58,16 @@ template <int dim, bool neighbour_is_fluid, bool count_fill, bool sided, class V
           class Diffusion>
 inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
                    std::uint32_t jb, std::uint32_t je, const double (&xi)[3], const float (&vi)[3],
-                   float rhoi, float pti, const float (&si)[4], float mj, float (&acc)[5],
-                   float& dot_rr2_max)
+                   float rhoi, float pti, const float (&si)[4], float min_facing, float mj,
+                   float (&acc)[5], float& dot_rr2_max)
 {
   const float* const s0 = sided ? in.side[0] : nullptr;
   const float* const s1 = sided ? in.side[1] : nullptr;
   const float* const s2 = sided ? in.side[dim - 1] : nullptr;
   const float* const sk = sided ? in.skin : nullptr;
   const float si0 = si[0], si1 = si[1], si2 = si[2], ski = si[3];
+  // A particle near no thin skin (skin 0) masks nothing: facing >= -1 > -2.
+  const float cut_below = ski > 0.0f ? min_facing : -2.0f;
   const double* const x0 = in.x[0];
   const double* const x1 = in.x[1];
   const double* const x2 = in.x[dim - 1];
@@ -89,7 +93,7 @@ inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const D
     if constexpr (sided)
     {
       const float facing = si0 * s0[j] + si1 * s1[j] + (dim == 3 ? si2 * s2[j] : 0.0f);
-      t = (sk[j] == ski && facing < -0.5f) ? 0.0f : t; // a select, not a branch
+      t = (sk[j] == ski && facing < cut_below) ? 0.0f : t; // a select, not a branch
     }
     const float t3 = t * t * t;
     const float fac = kf * t3;
@@ -173,11 +177,12 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
       const std::int64_t base = c + in.rows[r];
       gather<dim, true, count_fill, sided>(in, visc, diff, in.fluid_start[base],
                                            in.fluid_start[base + 3], xi, vi, rhoi, pti, si,
-                                           in.mass_fluid, acc, vmax);
+                                           target_is_fluid ? -0.5f : 0.5f, in.mass_fluid, acc,
+                                           vmax);
       if constexpr (target_is_fluid)
         gather<dim, false, count_fill, sided>(in, visc, diff, in.boundary_start[base],
                                               in.boundary_start[base + 3], xi, vi, rhoi, pti, si,
-                                              in.mass_boundary, acc, vmax);
+                                              0.5f, in.mass_boundary, acc, vmax);
     }
     for (int d = 0; d < dim; ++d)
       in.a[d][i] = acc[d];

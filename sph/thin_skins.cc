@@ -335,6 +335,46 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
   return n_crossed;
 }
 
+template <int dim>
+void ThinSkins<dim>::label_boundary(ParticleArrays<dim>& p, const NeighbourGrid<dim>& grid,
+                                   const std::vector<char>& is_own) const
+{
+  const std::size_t nb = p.n_boundary;
+#pragma omp parallel for schedule(dynamic, 1024) if (nb > parallel_threshold)
+  for (std::size_t i = 0; i < nb; ++i)
+  {
+    if (is_own[p.id[i]])
+      continue;
+    Vector x;
+    for (int d = 0; d < dim; ++d)
+      x[d] = p.position[d][i];
+    float side[dim] = {}, skin = 0;
+    const std::uint32_t c = grid.cell_of(x.data());
+    if (c != NeighbourGrid<dim>::outside && start_[c] != start_[c + 1])
+    {
+      double best_d2 = std::numeric_limits<double>::infinity();
+      ClosestPoint<dim> best;
+      std::uint32_t k = 0;
+      for (std::uint32_t e = start_[c]; e < start_[c + 1]; ++e)
+      {
+        const Face& f = faces_[entries_[e]];
+        const ClosestPoint<dim> cp = closest_point_on_face(*walls_[f.wall], int(f.face), x);
+        if (cp.distance2 < best_d2)
+          best_d2 = cp.distance2, best = cp, k = entries_[e];
+      }
+      const double distance = std::sqrt(best_d2);
+      const Vector s = distance > 0 ? Vector((x - best.point) / distance)
+                                    : face_normal(*walls_[faces_[k].wall], int(faces_[k].face));
+      for (int d = 0; d < dim; ++d)
+        side[d] = float(s[d]);
+      skin = float(faces_[k].wall + 1);
+    }
+    for (int d = 0; d < dim; ++d)
+      p.side[d][i] = side[d];
+    p.skin[i] = skin;
+  }
+}
+
 template bool is_closed(const WallSurface<2>&);
 template bool is_closed(const WallSurface<3>&);
 template double skin_thickness(const WallSurface<2>&);

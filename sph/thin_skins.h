@@ -69,6 +69,13 @@ public:
                           const NeighbourGrid<dim>& grid, double guard_distance, double mass,
                           double dt, std::vector<std::vector<Vector>>& guard_forces);
 
+  /// Sides of the boundary particles [0, n_boundary) that belong to no thin skin
+  /// (a tank's dummy layers that a thin skin dips into must not act across it either):
+  /// as for fluid particles, without the guard. is_own[id]: boundary particle id is a
+  /// thin skin's dummy particle (it keeps the side of its face).
+  void label_boundary(ParticleArrays<dim>& p, const NeighbourGrid<dim>& grid,
+                      const std::vector<char>& is_own) const;
+
 private:
   struct Face
   {
