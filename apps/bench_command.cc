@@ -1,3 +1,4 @@
+#include "apps/bench_case.h"
 #include "apps/commands.h"
 #include "bench/benchmarks.h"
 #include "common/input_error.h"
@@ -24,6 +25,8 @@ const Benchmark benchmarks[] = {
      bench::sph_dambreak3d_benchmark},
     {"mbs", "wall time per implicit step of a 20-mode body and a 3-link chain",
      bench::mbs_step_benchmark},
+    {"case", "wall time per step of any case file (chipflex bench case CASE.prm --help)",
+     bench_case},
 };
 
 void print_list(std::ostream& out)

@@ -15,11 +15,10 @@
 #include "apps/channel_acoustics.h"
 #include "apps/command_line.h"
 #include "apps/commands.h"
-#include "apps/coupled_simulation.h"
 #include "apps/fluid_continuity.h"
-#include "apps/fluid_simulation.h"
 #include "apps/probe_output.h"
 #include "apps/progress_meter.h"
+#include "apps/simulation_factory.h"
 #include "common/atomic_output.h"
 #include "common/hdf5_file.h"
 #include "common/input_error.h"
@@ -37,25 +36,6 @@ namespace chipflex::apps
 {
 namespace
 {
-std::unique_ptr<Simulation> make_simulation(const CaseFile& c, const std::string& dir)
-{
-  // A case with bodies in `subsection bodies` runs coupled (coupling/).
-  if (n_case_bodies(*c.parameters, c.body_subsections) > 0)
-  {
-    const ContactCase contact = read_contact_case(*c.parameters, c.path);
-    if (c.dimension == 2)
-      return std::make_unique<CoupledSimulation<2>>(
-          c.case_2d, read_body_case<2>(*c.parameters, c.path, c.case_2d, c.body_subsections), dir,
-          contact);
-    return std::make_unique<CoupledSimulation<3>>(
-        c.case_3d, read_body_case<3>(*c.parameters, c.path, c.case_3d, c.body_subsections), dir,
-        contact);
-  }
-  if (c.dimension == 2)
-    return std::make_unique<FluidSimulation<2>>(c.case_2d, dir);
-  return std::make_unique<FluidSimulation<3>>(c.case_3d, dir);
-}
-
 struct Cadence
 {
   double next_frame = 0, next_probe = 0, next_checkpoint = 0;

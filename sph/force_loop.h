@@ -25,6 +25,7 @@
 #include "sph/particle_arrays.h"
 
 #include <algorithm>
+#include <type_traits>
 #include <cmath>
 #include <cstdint>
 
@@ -172,18 +173,28 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
     float acc[5] = {0, 0, 0, 0, 0};
     float vmax = 0;
     const std::int64_t c = in.cell[i];
-    for (int r = 0; r < NeighbourGrid<dim>::n_rows; ++r)
+    auto rows = [&](auto masked)
     {
-      const std::int64_t base = c + in.rows[r];
-      gather<dim, true, count_fill, sided>(in, visc, diff, in.fluid_start[base],
-                                           in.fluid_start[base + 3], xi, vi, rhoi, pti, si,
-                                           target_is_fluid ? -0.5f : 0.5f, in.mass_fluid, acc,
-                                           vmax);
-      if constexpr (target_is_fluid)
-        gather<dim, false, count_fill, sided>(in, visc, diff, in.boundary_start[base],
-                                              in.boundary_start[base + 3], xi, vi, rhoi, pti, si,
-                                              0.5f, in.mass_boundary, acc, vmax);
-    }
+      constexpr bool mask = decltype(masked)::value;
+      for (int r = 0; r < NeighbourGrid<dim>::n_rows; ++r)
+      {
+        const std::int64_t base = c + in.rows[r];
+        gather<dim, true, count_fill, mask>(in, visc, diff, in.fluid_start[base],
+                                            in.fluid_start[base + 3], xi, vi, rhoi, pti, si,
+                                            target_is_fluid ? -0.5f : 0.5f, in.mass_fluid, acc,
+                                            vmax);
+        if constexpr (target_is_fluid)
+          gather<dim, false, count_fill, mask>(in, visc, diff, in.boundary_start[base],
+                                               in.boundary_start[base + 3], xi, vi, rhoi, pti, si,
+                                               0.5f, in.mass_boundary, acc, vmax);
+      }
+    };
+    // A particle near no thin skin masks nothing: it takes the plain loop (one branch
+    // per particle, none per pair).
+    if (sided && si[3] > 0.0f)
+      rows(std::true_type{});
+    else
+      rows(std::false_type{});
     for (int d = 0; d < dim; ++d)
       in.a[d][i] = acc[d];
     in.density_rate[i] = acc[3];
