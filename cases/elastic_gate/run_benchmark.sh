@@ -12,7 +12,7 @@
 #              nu 0.47, weightless, observer at the downstream lower corner); a variant may
 #              carry modifiers, each ':NAME': ':noweight' / ':weight' (the gate's own weight
 #              off / on), ':gap' (the gate lifted GAP_MM off the floor, the wall above with
-#              it), ':dummy' / ':lj' (the gate's wall model: dummy particles / Lennard-Jones),
+#              it), ':dummy' / ':lj' / ':thin' (the gate's wall model: dummy particles / Lennard-Jones / thin skin),
 #              ':ljthin' (the gate's Lennard-Jones wall with half its reach: r0 = dp/4, R = dp/2),
 #              ':uncorrected' (sph solid: the seed's GMS-2001 solid); its run folder is the
 #              name with '_' for ':'.
@@ -68,8 +68,9 @@ for spec in $variants; do
             -e "s|^\(    set position *= 0.1025, \)0.079|\1$(awk "BEGIN { print 0.079 + $gap }")|" \
             -e "s|^\(    set probe point *= 0.105, \)0 |\1$gap |" \
             -e "/^    set polylines/s|0.079|$(awk "BEGIN { print 0.079 + $gap }")|g" "$run.prm" ;;
-      dummy | lj)
-        wm=$([ "$m" = dummy ] && echo "dummy particles" || echo "lennard jones")
+      dummy | lj | thin)
+        wm=$(case $m in dummy) echo "dummy particles" ;; lj) echo "lennard jones" ;;
+             *) echo "thin skin" ;; esac)
         sed -i -e '/^    set wall model *=/d' \
             -e "s|^\(    set name *= gate\)\$|\1\n    set wall model = $wm|" "$run.prm" ;;
       ljthin)

@@ -13,9 +13,10 @@
 #     test used to stop at 0.02 s, where that swing was still in its last third and the
 #     balance depended on the CPU (+20 % on one machine).
 # The key figures hold bands (docs/drill_flute.md): the barrier's contact force over the
-# last third 20 ... 120 N/m and the pressure drop 7 ... 20 kPa; measured 68.6 N/m and
-# 13.6 kPa (Intel Xeon, native), 73.8 N/m and 13.9 kPa (AMD EPYC, native), 41.9 N/m and
-# 10.6 kPa (AMD EPYC, portable). The force is a train of chip impacts on the barrier, so its
+# last third 20 ... 120 N/m and the pressure drop 7 ... 20 kPa; measured with the strips
+# as thin skins 61.6 N/m and 12.1 kPa (AMD EPYC, native, 2026-12-04); with the former
+# Lennard-Jones strips 68.6 N/m and 13.6 kPa (Intel Xeon, native), 73.8 N/m and 13.9 kPa
+# (AMD EPYC, native), 41.9 N/m and 10.6 kPa (AMD EPYC, portable). The force is a train of chip impacts on the barrier, so its
 # mean over 10 ms moves with the trajectory; a lost contact (0) or a reversed one fails.
 # A barrier the chips slipped through, a contact reaction with the wrong sign or lost, a
 # pressure probe on the wrong side or an outlet that drains the channel fails it.
