@@ -4,7 +4,9 @@
 # x = 0.1 m:
 #   zero   - zero thickness (an open polyline), 0.10 m of water on its left, air on its right;
 #   quarter - a closed outline dp/4 = 0.5 mm thick, the same water;
-#   levels  - zero thickness, 0.10 m of water on the left and 0.04 m on the right.
+#   levels  - zero thickness, 0.10 m of water on the left and 0.04 m on the right;
+#   fixed   - the levels case with the plate as a fixed polyline wall (walls' `wall
+#             model = thin skin`): the levels stay apart.
 # Checked over 0.15 ... 0.4 s: the plate's horizontal load against hydrostatics,
 # rho g H^2 / 2 = 49.05 N/m (levels: rho g (H1^2 - H2^2) / 2 = 41.20 N/m), within 3 %;
 # the left level falls by less than dp; the right side stays dry (zero, quarter) or
@@ -85,6 +87,22 @@ run_case zero "0.1, -0.01, 0.1, 0.15" "0, 0, 0.1, 0.1" 49.05
 run_case quarter "0.1, -0.01, 0.1005, -0.01, 0.1005, 0.15, 0.1, 0.15, 0.1, -0.01" \
   "0, 0, 0.1, 0.1" 49.05
 run_case levels "0.1, -0.01, 0.1, 0.15" "0, 0, 0.1, 0.1; 0.1, 0, 0.2, 0.04" 41.20
+# A fixed wall: the zero-thickness plate as a polyline of the case's walls with `wall
+# model = thin skin`, the two levels (a fixed wall's load goes to walls.xdmf, not to the
+# probes: the levels and the guard are checked).
+sed -e 's|^  subsection tank|  subsection walls\n    set polylines  = 0.1, -0.01, 0.1, 0.15\n    set wall model = thin skin\n  end\n  subsection tank|' \
+    -e '/^subsection bodies/,$d' "$dir/levels.prm" > "$dir/fixed.prm"
+"$chipflex" run "$dir/fixed.prm" --out "$dir/fixed" > "$dir/fixed.log" 2>&1 ||
+  { cat "$dir/fixed.log"; fail "fixed: run failed"; }
+grep -q "guarded_particles=0" "$dir/fixed/summary.txt" || fail "fixed: the guard put particles back"
+awk -F, 'NR == 1 { for (k = 1; k <= NF; ++k) col[$k] = k; next }
+  NR == 2 { l0 = $col["h_left_m"]; r0 = $col["h_right_m"] }
+  { l = $col["h_left_m"]; r = $col["h_right_m"] }
+  END { printf "fixed: left level %.4f -> %.4f m, right %.4f -> %.4f m\n", l0, l, r0, r
+        d1 = l - l0; d2 = r - r0
+        exit !(d1 < 0.002 && d1 > -0.002 && d2 < 0.002 && d2 > -0.002) }' "$dir/fixed/probes.csv" ||
+  fail "fixed: the levels did not stay apart"
+
 repo=${2:-$(cd "$(dirname "$0")/../.." && pwd)}
 flute=$repo/cases/drill_flute/flute_2d.prm
 "$chipflex" run "$flute" --out "$dir/first" --end-time 0.006 --checkpoint-every 0.006 > "$dir/first.log" 2>&1 ||
