@@ -12,8 +12,8 @@
 #include "apps/simulation_factory.h"
 #include "common/input_error.h"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <omp.h>
@@ -53,8 +53,8 @@ int bench_case(const Arguments& args)
   std::filesystem::remove_all(dir);
   const double per_step = seconds / double(steps);
   std::cout << "case " << cl.get("CASE.prm") << ": " << sim->n_fluid_particles()
-            << " fluid particles, " << steps << " steps after " << warm_up << " (t = "
-            << sim->time() << " s), " << omp_get_max_threads() << " thread(s)\n"
+            << " fluid particles, " << steps << " steps after " << warm_up
+            << " (t = " << sim->time() << " s), " << omp_get_max_threads() << " thread(s)\n"
             << "  " << 1e3 * per_step << " ms per step, "
             << 1e9 * per_step / double(std::max<std::size_t>(1, sim->n_fluid_particles()))
             << " ns per fluid particle and step\n";

@@ -31,7 +31,7 @@ struct CaseBody
   /// `wall model = automatic`: thin skin or lennard jones, chosen from the skin's
   /// thickness when the fluid is known (CoupledSimulation).
   bool automatic_wall_model = false;
-  std::string wall_model_note; ///< why automatic chose what it chose (summary)
+  std::string wall_model_note;               ///< why automatic chose what it chose (summary)
   sph::LennardJonesParameters lennard_jones; ///< zeros: derived from the fluid
   std::size_t displaced_fluid = 0;           ///< fluid particles removed from inside it
   int probe_node = -1; ///< skin node that is the probe (`probe point`); -1: the kind's own

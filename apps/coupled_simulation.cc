@@ -341,8 +341,7 @@ std::string CoupledSimulation<dim>::summary() const
   s << fluid_.summary();
   for (const auto& b : case_.bodies)
     s << "\nbody '" << b.name << "': " << b.body->kind() << ", " << b.body->skin().n_skin_nodes()
-      << " skin nodes, "
-      << sph::wall_model_name(b.wall_model) << " wall"
+      << " skin nodes, " << sph::wall_model_name(b.wall_model) << " wall"
       << (b.wall_model_note.empty() ? std::string() : " (" + b.wall_model_note + ")")
       << (b.displaced_fluid
               ? ", " + std::to_string(b.displaced_fluid) + " fluid particles inside it removed"

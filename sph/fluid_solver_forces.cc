@@ -135,8 +135,9 @@ void FluidSolver<dim>::label_thin_skin_sides()
     // it: the kernel support plus the layers' depth.
     int layers = 0;
     for (const auto& w : walls_)
-      layers = std::max(layers, w.dummy_layers > 0 ? w.dummy_layers
-                                                   : int(std::ceil(2 * h_ / parameters_.particle_spacing)));
+      layers = std::max(layers, w.dummy_layers > 0
+                                    ? w.dummy_layers
+                                    : int(std::ceil(2 * h_ / parameters_.particle_spacing)));
     const double reach = 2 * h_ + layers * parameters_.particle_spacing;
     im.thin_skins.bin(thin, im.wall_closed, im.grid, reach);
     im.thin_skins_binned = true;
@@ -149,9 +150,9 @@ void FluidSolver<dim>::label_thin_skin_sides()
     }
     im.thin_skins.label_boundary(particles_, im.grid, im.thin_dummy);
   }
-  im.n_guarded += im.thin_skins.label_fluid(particles_, particles_.n_boundary, particles_.size(),
-                                            im.grid, 0.25 * parameters_.particle_spacing, mass_,
-                                            dt_, im.guard_forces);
+  im.n_guarded +=
+      im.thin_skins.label_fluid(particles_, particles_.n_boundary, particles_.size(), im.grid,
+                                0.25 * parameters_.particle_spacing, mass_, dt_, im.guard_forces);
 }
 
 template <int dim>

@@ -25,9 +25,9 @@
 #include "sph/particle_arrays.h"
 
 #include <algorithm>
-#include <type_traits>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 namespace chipflex::sph
 {
@@ -179,10 +179,9 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
       for (int r = 0; r < NeighbourGrid<dim>::n_rows; ++r)
       {
         const std::int64_t base = c + in.rows[r];
-        gather<dim, true, count_fill, mask>(in, visc, diff, in.fluid_start[base],
-                                            in.fluid_start[base + 3], xi, vi, rhoi, pti, si,
-                                            target_is_fluid ? -0.5f : 0.5f, in.mass_fluid, acc,
-                                            vmax);
+        gather<dim, true, count_fill, mask>(
+            in, visc, diff, in.fluid_start[base], in.fluid_start[base + 3], xi, vi, rhoi, pti, si,
+            target_is_fluid ? -0.5f : 0.5f, in.mass_fluid, acc, vmax);
         if constexpr (target_is_fluid)
           gather<dim, false, count_fill, mask>(in, visc, diff, in.boundary_start[base],
                                                in.boundary_start[base + 3], xi, vi, rhoi, pti, si,
@@ -231,8 +230,7 @@ float force_pass(const ForcePassInput<dim>& in, const Viscosity& visc, const Dif
   float dot_rr2_max = 0;
 #pragma omp parallel if (n > parallel_threshold)
   {
-    detail::particle_loop<dim, false, false, sided>(in, visc, NoDensityDiffusion{}, 0,
-                                                    n_boundary);
+    detail::particle_loop<dim, false, false, sided>(in, visc, NoDensityDiffusion{}, 0, n_boundary);
     const float m =
         detail::particle_loop<dim, true, count_fill, sided>(in, visc, diff, n_boundary, n);
 #pragma omp critical(chipflex_sph_force_pass_max)

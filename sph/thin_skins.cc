@@ -207,9 +207,9 @@ void ThinSkins<dim>::bin(const std::vector<const WallSurface<dim>*>& walls,
 }
 
 template <int dim>
-std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t first,
-                                        std::size_t last, const NeighbourGrid<dim>& grid,
-                                        double guard_distance, double mass, double dt,
+std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t first, std::size_t last,
+                                        const NeighbourGrid<dim>& grid, double guard_distance,
+                                        double mass, double dt,
                                         std::vector<std::vector<Vector>>& guard_forces)
 {
   crossed_.assign(last - first, 0);
@@ -337,7 +337,7 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
 
 template <int dim>
 void ThinSkins<dim>::label_boundary(ParticleArrays<dim>& p, const NeighbourGrid<dim>& grid,
-                                   const std::vector<char>& is_own) const
+                                    const std::vector<char>& is_own) const
 {
   const std::size_t nb = p.n_boundary;
 #pragma omp parallel for schedule(dynamic, 1024) if (nb > parallel_threshold)

@@ -15,7 +15,7 @@ namespace chipflex::sph
 {
 enum class WallModel
 {
-  lennard_jones,  ///< the seed paper's modified Lennard-Jones force (docs/sph.md)
+  lennard_jones,   ///< the seed paper's modified Lennard-Jones force (docs/sph.md)
   dummy_particles, ///< layers of dummy particles that move with the surface
   /// A skin of any thickness down to zero (an open polyline or surface, or a closed
   /// skin thinner than the kernel) with fluid on one or both sides: sided dummy
