@@ -101,34 +101,10 @@ std::vector<Eigen::Matrix<double, dim, 1>> generate_dummy_particles(const WallSu
     points.push_back(x);
   };
   for (std::size_t f = 0; f < wall.faces.size(); ++f)
-  {
-    const auto& face = wall.faces[f];
-    if constexpr (dim == 2)
-    {
-      const Vector a = wall.vertices[face[0]], b = wall.vertices[face[1]];
-      const int n = std::max(1, int(std::lround((b - a).norm() / dp)));
-      for (int l = 0; l < layers; ++l)
-        for (int s = 0; s < n; ++s)
-        {
-          const double t = (s + 0.5) / n;
-          add(point_on_face(wall, int(f), {1 - t, t}, -(l + 0.5) * dp), f);
-        }
-    }
-    else
-    {
-      const Vector a = wall.vertices[face[0]], b = wall.vertices[face[1]],
-                   c = wall.vertices[face[2]];
-      const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-      const int n = std::max(1, int(std::lround(longest / dp)));
-      for (int l = 0; l < layers; ++l)
-        for (int i = 0; i < n; ++i)
-          for (int j = 0; i + j < n; ++j)
-          {
-            const double u = (i + 1.0 / 3) / n, v = (j + 1.0 / 3) / n;
-            add(point_on_face(wall, int(f), {1 - u - v, u, v}, -(l + 0.5) * dp), f);
-          }
-    }
-  }
+    for (int l = 0; l < layers; ++l)
+      for_face_lattice(wall, int(f), dp,
+                       [&](const std::array<double, dim>& w)
+                       { add(point_on_face(wall, int(f), w, -(l + 0.5) * dp), f); });
   return points;
 }
 

@@ -9,7 +9,9 @@
 
 #include "sph/wall_surface.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -23,6 +25,38 @@ struct WallAttachment
   std::array<double, dim> weights{};
   double offset = 0;
 };
+
+/// Barycentric weights of the points of a lattice about dp apart on one face (2D: the
+/// midpoints of n equal pieces; 3D: the centroids of the n^2 sub-triangles' lower row),
+/// in a fixed order; `f(weights)` is called for each. The dummy layers are these points
+/// moved along the face normal.
+template <int dim, class F>
+void for_face_lattice(const WallSurface<dim>& wall, int face, double dp, F&& f)
+{
+  const auto& v = wall.faces[face];
+  if constexpr (dim == 2)
+  {
+    const int n =
+        std::max(1, int(std::lround((wall.vertices[v[1]] - wall.vertices[v[0]]).norm() / dp)));
+    for (int s = 0; s < n; ++s)
+    {
+      const double t = (s + 0.5) / n;
+      f(std::array<double, 2>{1 - t, t});
+    }
+  }
+  else
+  {
+    const auto &a = wall.vertices[v[0]], &b = wall.vertices[v[1]], &c = wall.vertices[v[2]];
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    const int n = std::max(1, int(std::lround(longest / dp)));
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; i + j < n; ++j)
+      {
+        const double u = (i + 1.0 / 3) / n, w = (j + 1.0 / 3) / n;
+        f(std::array<double, 3>{1 - u - w, u, w});
+      }
+  }
+}
 
 /// Layers at offsets -(l + 1/2) dp behind every face (l < layers), dp apart along the
 /// face; points closer than dp/2 to an earlier one (convex corners) are dropped.

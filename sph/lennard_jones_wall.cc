@@ -30,41 +30,9 @@ void LennardJonesWalls<dim>::bin(const std::vector<const WallSurface<dim>*>& wal
 {
   walls_ = walls;
   forces_.clear();
-  faces_.clear();
   for (std::uint32_t w = 0; w < walls.size(); ++w)
-  {
     forces_.emplace_back(walls[w] ? walls[w]->lennard_jones : LennardJonesParameters{1, 2, 1});
-    if (walls[w])
-      for (std::uint32_t f = 0; f < walls[w]->faces.size(); ++f)
-        faces_.push_back({w, f});
-  }
-  start_.assign(grid.n_cells() + 1, 0);
-  entries_.clear();
-  if (faces_.empty())
-    return;
-  // Two passes (count, fill) build a compressed cell -> faces table.
-  auto for_each = [&](auto&& f)
-  {
-    for (std::uint32_t k = 0; k < faces_.size(); ++k)
-    {
-      const auto& wall = *walls_[faces_[k].wall];
-      const auto& face = wall.faces[faces_[k].face];
-      Vector lo = wall.vertices[face[0]], hi = lo;
-      for (int v = 1; v < dim; ++v)
-      {
-        lo = lo.cwiseMin(wall.vertices[face[v]]);
-        hi = hi.cwiseMax(wall.vertices[face[v]]);
-      }
-      const double R = forces_[faces_[k].wall].R;
-      grid.for_cells_overlapping(lo.array() - R, hi.array() + R, [&](std::uint32_t c) { f(c, k); });
-    }
-  };
-  for_each([&](std::uint32_t c, std::uint32_t) { ++start_[c + 1]; });
-  for (std::size_t c = 0; c + 1 < start_.size(); ++c)
-    start_[c + 1] += start_[c];
-  entries_.resize(start_.back());
-  std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
-  for_each([&](std::uint32_t c, std::uint32_t k) { entries_[next[c]++] = k; });
+  bins_.bin(walls, grid, [&](std::uint32_t w) { return forces_[w].R; });
 }
 
 template <int dim>
@@ -72,7 +40,7 @@ void LennardJonesWalls<dim>::apply(ParticleArrays<dim>& p, std::size_t first, st
                                    double mass,
                                    std::vector<std::vector<Vector>>& vertex_forces) const
 {
-  if (faces_.empty())
+  if (bins_.faces.empty())
     return;
   std::vector<std::vector<Contribution>> per_thread(omp_get_max_threads());
 #pragma omp parallel if (last - first > parallel_threshold)
@@ -84,7 +52,7 @@ void LennardJonesWalls<dim>::apply(ParticleArrays<dim>& p, std::size_t first, st
     for (std::size_t i = first; i < last; ++i)
     {
       const std::uint32_t c = p.cell[i];
-      if (start_[c] == start_[c + 1])
+      if (bins_.start[c] == bins_.start[c + 1])
         continue;
       Vector x;
       for (int d = 0; d < dim; ++d)
@@ -93,9 +61,9 @@ void LennardJonesWalls<dim>::apply(ParticleArrays<dim>& p, std::size_t first, st
       // Planes already applied to this particle (wall, normal, offset).
       std::array<std::pair<std::uint32_t, Eigen::Matrix<double, dim + 1, 1>>, 8> planes;
       int n_planes = 0;
-      for (std::uint32_t e = start_[c]; e < start_[c + 1]; ++e)
+      for (std::uint32_t e = bins_.start[c]; e < bins_.start[c + 1]; ++e)
       {
-        const Face& f = faces_[entries_[e]];
+        const typename FaceBins<dim>::Face& f = bins_.faces[bins_.entries[e]];
         const auto& wall = *walls_[f.wall];
         const auto& lj = forces_[f.wall];
         const FaceProjection<dim> proj = project_on_face(wall, f.face, x);

@@ -20,6 +20,7 @@
 // particle only tests the faces of its own cell. Faces in one plane (a triangulated
 // flat wall, collinear segments) act once on a particle even at shared edges.
 
+#include "sph/face_bins.h"
 #include "sph/neighbour_grid.h"
 #include "sph/particle_arrays.h"
 #include "sph/wall_surface.h"
@@ -66,13 +67,9 @@ public:
   void apply(ParticleArrays<dim>& p, std::size_t first, std::size_t last, double mass,
              std::vector<std::vector<Vector>>& vertex_forces) const;
 
-  bool empty() const { return faces_.empty(); }
+  bool empty() const { return bins_.faces.empty(); }
 
 private:
-  struct Face
-  {
-    std::uint32_t wall, face;
-  };
   struct Contribution
   {
     std::uint32_t wall, face;
@@ -81,7 +78,6 @@ private:
   };
   std::vector<const WallSurface<dim>*> walls_;
   std::vector<LennardJonesForce> forces_;
-  std::vector<Face> faces_;
-  std::vector<std::uint32_t> start_, entries_;
+  FaceBins<dim> bins_;
 };
 } // namespace chipflex::sph

@@ -121,35 +121,13 @@ std::vector<WallAttachment<dim>> generate_thin_skin_dummies(const WallSurface<di
   const bool both_sides = !is_closed(wall);
   for (std::uint32_t f = 0; f < wall.faces.size(); ++f)
   {
-    const auto& face = wall.faces[f];
     for (int side = 0; side < (both_sides ? 2 : 1); ++side)
     {
       const double sign = side == 0 ? -1 : 1;
-      if constexpr (dim == 2)
-      {
-        const Vector a = wall.vertices[face[0]], b = wall.vertices[face[1]];
-        const int n = std::max(1, int(std::lround((b - a).norm() / dp)));
-        for (int l = 0; l < layers; ++l)
-          for (int s = 0; s < n; ++s)
-          {
-            const double t = (s + 0.5) / n;
-            add(f, {1 - t, t}, sign * (l + 0.5) * dp);
-          }
-      }
-      else
-      {
-        const Vector a = wall.vertices[face[0]], b = wall.vertices[face[1]],
-                     c = wall.vertices[face[2]];
-        const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-        const int n = std::max(1, int(std::lround(longest / dp)));
-        for (int l = 0; l < layers; ++l)
-          for (int i = 0; i < n; ++i)
-            for (int j = 0; i + j < n; ++j)
-            {
-              const double u = (i + 1.0 / 3) / n, v = (j + 1.0 / 3) / n;
-              add(f, {1 - u - v, u, v}, sign * (l + 0.5) * dp);
-            }
-      }
+      for (int l = 0; l < layers; ++l)
+        for_face_lattice(wall, int(f), dp,
+                         [&](const std::array<double, dim>& w)
+                         { add(f, w, sign * (l + 0.5) * dp); });
     }
   }
   return out;
@@ -173,37 +151,7 @@ void ThinSkins<dim>::bin(const std::vector<const WallSurface<dim>*>& walls,
 {
   walls_ = walls;
   closed_ = closed;
-  faces_.clear();
-  for (std::uint32_t w = 0; w < walls.size(); ++w)
-    if (walls[w])
-      for (std::uint32_t f = 0; f < walls[w]->faces.size(); ++f)
-        faces_.push_back({w, f});
-  start_.assign(grid.n_cells() + 1, 0);
-  entries_.clear();
-  if (faces_.empty())
-    return;
-  auto for_each = [&](auto&& f)
-  {
-    for (std::uint32_t k = 0; k < faces_.size(); ++k)
-    {
-      const auto& wall = *walls_[faces_[k].wall];
-      const auto& face = wall.faces[faces_[k].face];
-      Vector lo = wall.vertices[face[0]], hi = lo;
-      for (int v = 1; v < dim; ++v)
-      {
-        lo = lo.cwiseMin(wall.vertices[face[v]]);
-        hi = hi.cwiseMax(wall.vertices[face[v]]);
-      }
-      grid.for_cells_overlapping(lo.array() - reach, hi.array() + reach,
-                                 [&](std::uint32_t c) { f(c, k); });
-    }
-  };
-  for_each([&](std::uint32_t c, std::uint32_t) { ++start_[c + 1]; });
-  for (std::size_t c = 0; c + 1 < start_.size(); ++c)
-    start_[c + 1] += start_[c];
-  entries_.resize(start_.back());
-  std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
-  for_each([&](std::uint32_t c, std::uint32_t k) { entries_[next[c]++] = k; });
+  bins_.bin(walls, grid, [reach](std::uint32_t) { return reach; });
 }
 
 template <int dim>
@@ -218,15 +166,15 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
   auto nearest = [&](const Vector& x, std::uint32_t& best, ClosestPoint<dim>& closest)
   {
     const std::uint32_t c = grid.cell_of(x.data());
-    if (c == NeighbourGrid<dim>::outside || start_[c] == start_[c + 1])
+    if (c == NeighbourGrid<dim>::outside || bins_.start[c] == bins_.start[c + 1])
       return false;
     double best_d2 = std::numeric_limits<double>::infinity();
-    for (std::uint32_t e = start_[c]; e < start_[c + 1]; ++e)
+    for (std::uint32_t e = bins_.start[c]; e < bins_.start[c + 1]; ++e)
     {
-      const Face& f = faces_[entries_[e]];
+      const typename FaceBins<dim>::Face& f = bins_.faces[bins_.entries[e]];
       const ClosestPoint<dim> cp = closest_point_on_face(*walls_[f.wall], int(f.face), x);
       if (cp.distance2 < best_d2)
-        best_d2 = cp.distance2, best = entries_[e], closest = cp;
+        best_d2 = cp.distance2, best = bins_.entries[e], closest = cp;
     }
     return true;
   };
@@ -246,7 +194,7 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
       p.skin[i] = 0;
       continue;
     }
-    const Face& f = faces_[k];
+    const typename FaceBins<dim>::Face& f = bins_.faces[k];
     const double distance = std::sqrt(cp.distance2);
     Vector s = distance > 0 ? Vector((x - cp.point) / distance)
                             : face_normal(*walls_[f.wall], int(f.face));
@@ -276,29 +224,29 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
     std::uint32_t k = 0;
     ClosestPoint<dim> cp;
     nearest(x, k, cp);
-    const std::uint32_t w = faces_[k].wall;
-    Vector n = face_normal(*walls_[w], int(faces_[k].face));
+    const std::uint32_t w = bins_.faces[k].wall;
+    Vector n = face_normal(*walls_[w], int(bins_.faces[k].face));
     if (closed_[w])
     {
       // A closed skin: back in front of the nearest face that faces the old side (the
       // particle may have passed through the whole skin).
       const std::uint32_t c = grid.cell_of(x.data());
       double best = std::numeric_limits<double>::infinity();
-      for (std::uint32_t e = start_[c]; e < start_[c + 1]; ++e)
+      for (std::uint32_t e = bins_.start[c]; e < bins_.start[c + 1]; ++e)
       {
-        const Face& f = faces_[entries_[e]];
+        const typename FaceBins<dim>::Face& f = bins_.faces[bins_.entries[e]];
         if (f.wall != w || face_normal(*walls_[w], int(f.face)).dot(old_side) <= 0.5)
           continue;
         const ClosestPoint<dim> q = closest_point_on_face(*walls_[w], int(f.face), x);
         if (q.distance2 < best)
-          best = q.distance2, k = entries_[e], cp = q;
+          best = q.distance2, k = bins_.entries[e], cp = q;
       }
-      n = face_normal(*walls_[w], int(faces_[k].face));
+      n = face_normal(*walls_[w], int(bins_.faces[k].face));
     }
     else if (n.dot(old_side) < 0)
       n = -n; // towards the side it came from
     const WallSurface<dim>& wall = *walls_[w];
-    const auto& face = wall.faces[faces_[k].face];
+    const auto& face = wall.faces[bins_.faces[k].face];
     Vector v_wall = Vector::Zero();
     for (int j = 0; j < dim; ++j)
       v_wall += cp.weights[j] * wall.velocities[face[j]];
@@ -330,7 +278,7 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
       p.side[d][i] = float(n[d]);
     if (dt > 0)
       for (int j = 0; j < dim; ++j)
-        guard_forces[faces_[k].wall][face[j]] -= cp.weights[j] * mass * dv / dt;
+        guard_forces[bins_.faces[k].wall][face[j]] -= cp.weights[j] * mass * dv / dt;
   }
   return n_crossed;
 }
@@ -350,24 +298,25 @@ void ThinSkins<dim>::label_boundary(ParticleArrays<dim>& p, const NeighbourGrid<
       x[d] = p.position[d][i];
     float side[dim] = {}, skin = 0;
     const std::uint32_t c = grid.cell_of(x.data());
-    if (c != NeighbourGrid<dim>::outside && start_[c] != start_[c + 1])
+    if (c != NeighbourGrid<dim>::outside && bins_.start[c] != bins_.start[c + 1])
     {
       double best_d2 = std::numeric_limits<double>::infinity();
       ClosestPoint<dim> best;
       std::uint32_t k = 0;
-      for (std::uint32_t e = start_[c]; e < start_[c + 1]; ++e)
+      for (std::uint32_t e = bins_.start[c]; e < bins_.start[c + 1]; ++e)
       {
-        const Face& f = faces_[entries_[e]];
+        const typename FaceBins<dim>::Face& f = bins_.faces[bins_.entries[e]];
         const ClosestPoint<dim> cp = closest_point_on_face(*walls_[f.wall], int(f.face), x);
         if (cp.distance2 < best_d2)
-          best_d2 = cp.distance2, best = cp, k = entries_[e];
+          best_d2 = cp.distance2, best = cp, k = bins_.entries[e];
       }
       const double distance = std::sqrt(best_d2);
-      const Vector s = distance > 0 ? Vector((x - best.point) / distance)
-                                    : face_normal(*walls_[faces_[k].wall], int(faces_[k].face));
+      const Vector s = distance > 0
+                           ? Vector((x - best.point) / distance)
+                           : face_normal(*walls_[bins_.faces[k].wall], int(bins_.faces[k].face));
       for (int d = 0; d < dim; ++d)
         side[d] = float(s[d]);
-      skin = float(faces_[k].wall + 1);
+      skin = float(bins_.faces[k].wall + 1);
     }
     for (int d = 0; d < dim; ++d)
       p.side[d][i] = side[d];

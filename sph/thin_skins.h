@@ -20,6 +20,7 @@
 //    vertices, so the exchange stays momentum conserving.
 
 #include "sph/dummy_wall_particles.h"
+#include "sph/face_bins.h"
 #include "sph/neighbour_grid.h"
 #include "sph/particle_arrays.h"
 #include "sph/wall_surface.h"
@@ -58,7 +59,7 @@ public:
   /// walls moved.
   void bin(const std::vector<const WallSurface<dim>*>& walls, const std::vector<char>& closed,
            const NeighbourGrid<dim>& grid, double reach);
-  bool empty() const { return faces_.empty(); }
+  bool empty() const { return bins_.faces.empty(); }
 
   /// Sides of fluid particles [first, last) for their current positions (computed with
   /// the grid, not p.cell: called before the sort); puts back the particles whose side
@@ -77,14 +78,9 @@ public:
                       const std::vector<char>& is_own) const;
 
 private:
-  struct Face
-  {
-    std::uint32_t wall, face;
-  };
   std::vector<const WallSurface<dim>*> walls_;
   std::vector<char> closed_;
-  std::vector<Face> faces_;
-  std::vector<std::uint32_t> start_, entries_;
+  FaceBins<dim> bins_;
   std::vector<std::uint8_t> crossed_;
 };
 

@@ -62,10 +62,11 @@ FaceProjection<dim> project_on_face(const WallSurface<dim>& wall, int face,
 template <int dim>
 struct ClosestPoint
 {
-  Eigen::Matrix<double, dim, 1> point; ///< nearest point of the face (edges included)
-  std::array<double, dim> weights;     ///< its barycentric weights (all >= 0)
-  double distance2;                    ///< squared distance from the point asked about
-  bool inside;                         ///< the nearest point is the foot point (interior)
+  /// Nearest point of the face (edges included).
+  Eigen::Matrix<double, dim, 1> point = Eigen::Matrix<double, dim, 1>::Zero();
+  std::array<double, dim> weights{}; ///< its barycentric weights (all >= 0)
+  double distance2 = 0;              ///< squared distance from the point asked about
+  bool inside = false;               ///< the nearest point is the foot point (interior)
 };
 
 /// The point of a face nearest to x: the foot point where it falls on the face, else
