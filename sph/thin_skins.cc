@@ -155,6 +155,24 @@ void ThinSkins<dim>::bin(const std::vector<const WallSurface<dim>*>& walls,
 }
 
 template <int dim>
+bool ThinSkins<dim>::nearest_face(const NeighbourGrid<dim>& grid, const Vector& x,
+                                  std::uint32_t& best, ClosestPoint<dim>& closest) const
+{
+  const std::uint32_t c = grid.cell_of(x.data());
+  if (c == NeighbourGrid<dim>::outside || bins_.start[c] == bins_.start[c + 1])
+    return false;
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (std::uint32_t e = bins_.start[c]; e < bins_.start[c + 1]; ++e)
+  {
+    const typename FaceBins<dim>::Face& f = bins_.faces[bins_.entries[e]];
+    const ClosestPoint<dim> cp = closest_point_on_face(*walls_[f.wall], int(f.face), x);
+    if (cp.distance2 < best_d2)
+      best_d2 = cp.distance2, best = bins_.entries[e], closest = cp;
+  }
+  return true;
+}
+
+template <int dim>
 std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t first, std::size_t last,
                                         const NeighbourGrid<dim>& grid, double guard_distance,
                                         double mass, double dt,
@@ -164,20 +182,7 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
   std::size_t n_crossed = 0;
   // The nearest face of the thin skins binned in x's cell: (entry, closest point).
   auto nearest = [&](const Vector& x, std::uint32_t& best, ClosestPoint<dim>& closest)
-  {
-    const std::uint32_t c = grid.cell_of(x.data());
-    if (c == NeighbourGrid<dim>::outside || bins_.start[c] == bins_.start[c + 1])
-      return false;
-    double best_d2 = std::numeric_limits<double>::infinity();
-    for (std::uint32_t e = bins_.start[c]; e < bins_.start[c + 1]; ++e)
-    {
-      const typename FaceBins<dim>::Face& f = bins_.faces[bins_.entries[e]];
-      const ClosestPoint<dim> cp = closest_point_on_face(*walls_[f.wall], int(f.face), x);
-      if (cp.distance2 < best_d2)
-        best_d2 = cp.distance2, best = bins_.entries[e], closest = cp;
-    }
-    return true;
-  };
+  { return nearest_face(grid, x, best, closest); };
 #pragma omp parallel for schedule(dynamic, 1024) reduction(+ : n_crossed)                          \
     if (last - first > parallel_threshold)
   for (std::size_t i = first; i < last; ++i)
@@ -297,20 +302,11 @@ void ThinSkins<dim>::label_boundary(ParticleArrays<dim>& p, const NeighbourGrid<
     for (int d = 0; d < dim; ++d)
       x[d] = p.position[d][i];
     float side[dim] = {}, skin = 0;
-    const std::uint32_t c = grid.cell_of(x.data());
-    if (c != NeighbourGrid<dim>::outside && bins_.start[c] != bins_.start[c + 1])
+    std::uint32_t k = 0;
+    ClosestPoint<dim> best;
+    if (nearest_face(grid, x, k, best))
     {
-      double best_d2 = std::numeric_limits<double>::infinity();
-      ClosestPoint<dim> best;
-      std::uint32_t k = 0;
-      for (std::uint32_t e = bins_.start[c]; e < bins_.start[c + 1]; ++e)
-      {
-        const typename FaceBins<dim>::Face& f = bins_.faces[bins_.entries[e]];
-        const ClosestPoint<dim> cp = closest_point_on_face(*walls_[f.wall], int(f.face), x);
-        if (cp.distance2 < best_d2)
-          best_d2 = cp.distance2, best = cp, k = bins_.entries[e];
-      }
-      const double distance = std::sqrt(best_d2);
+      const double distance = std::sqrt(best.distance2);
       const Vector s = distance > 0
                            ? Vector((x - best.point) / distance)
                            : face_normal(*walls_[bins_.faces[k].wall], int(bins_.faces[k].face));

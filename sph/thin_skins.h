@@ -23,6 +23,7 @@
 #include "sph/face_bins.h"
 #include "sph/neighbour_grid.h"
 #include "sph/particle_arrays.h"
+#include "sph/wall_geometry.h"
 #include "sph/wall_surface.h"
 
 #include <cstdint>
@@ -78,6 +79,11 @@ public:
                       const std::vector<char>& is_own) const;
 
 private:
+  /// The binned face nearest to x (its entry in bins_.faces, and the nearest point);
+  /// false when no thin-skin face is binned in x's cell.
+  bool nearest_face(const NeighbourGrid<dim>& grid, const Vector& x, std::uint32_t& best,
+                    ClosestPoint<dim>& closest) const;
+
   std::vector<const WallSurface<dim>*> walls_;
   std::vector<char> closed_;
   FaceBins<dim> bins_;
