@@ -139,7 +139,7 @@ void FluidSolver<dim>::label_thin_skin_sides()
                                     ? w.dummy_layers
                                     : int(std::ceil(2 * h_ / parameters_.particle_spacing)));
     const double reach = 2 * h_ + layers * parameters_.particle_spacing;
-    im.thin_skins.bin(thin, im.wall_closed, im.grid, reach);
+    im.thin_skins.bin(thin, im.wall_closed, im.grid, reach, parameters_.particle_spacing);
     im.thin_skins_binned = true;
     if (im.thin_dummy.empty())
     {

@@ -147,28 +147,30 @@ void dummy_side(const WallSurface<dim>& wall, const WallAttachment<dim>& a, floa
 template <int dim>
 void ThinSkins<dim>::bin(const std::vector<const WallSurface<dim>*>& walls,
                          const std::vector<char>& closed, const NeighbourGrid<dim>& grid,
-                         double reach)
+                         double reach, double exact_distance)
 {
   walls_ = walls;
   closed_ = closed;
   bins_.bin(walls, grid, [reach](std::uint32_t) { return reach; });
+  tree_.build(walls);
+  exact_distance_ = exact_distance;
 }
 
 template <int dim>
-bool ThinSkins<dim>::nearest_face(const NeighbourGrid<dim>& grid, const Vector& x,
-                                  std::uint32_t& best, ClosestPoint<dim>& closest) const
+bool ThinSkins<dim>::nearest_face(const NeighbourGrid<dim>& grid, const Vector& x, Face& best,
+                                  ClosestPoint<dim>& closest) const
 {
+  // The bins say whether x is within reach of a skin; the tree finds the nearest face.
   const std::uint32_t c = grid.cell_of(x.data());
   if (c == NeighbourGrid<dim>::outside || bins_.start[c] == bins_.start[c + 1])
     return false;
-  double best_d2 = std::numeric_limits<double>::infinity();
-  for (std::uint32_t e = bins_.start[c]; e < bins_.start[c + 1]; ++e)
-  {
-    const typename FaceBins<dim>::Face& f = bins_.faces[bins_.entries[e]];
-    const ClosestPoint<dim> cp = closest_point_on_face(*walls_[f.wall], int(f.face), x);
-    if (cp.distance2 < best_d2)
-      best_d2 = cp.distance2, best = bins_.entries[e], closest = cp;
-  }
+  // Exact within a spacing, where the guard needs the true foot point; farther out the
+  // side only has to tell the sides apart (the mask's thresholds are cosines of +-1/2,
+  // and a point at most 1.2 times as far as the nearest is seen within 34 degrees).
+  typename FaceTree<dim>::Face f{};
+  if (!tree_.nearest(x, exact_distance_, 0.2, f, closest))
+    return false;
+  best = {f.wall, f.face};
   return true;
 }
 
@@ -181,7 +183,7 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
   crossed_.assign(last - first, 0);
   std::size_t n_crossed = 0;
   // The nearest face of the thin skins binned in x's cell: (entry, closest point).
-  auto nearest = [&](const Vector& x, std::uint32_t& best, ClosestPoint<dim>& closest)
+  auto nearest = [&](const Vector& x, Face& best, ClosestPoint<dim>& closest)
   { return nearest_face(grid, x, best, closest); };
 #pragma omp parallel for schedule(dynamic, 1024) reduction(+ : n_crossed)                          \
     if (last - first > parallel_threshold)
@@ -190,16 +192,15 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
     Vector x;
     for (int d = 0; d < dim; ++d)
       x[d] = p.position[d][i];
-    std::uint32_t k = 0;
+    Face f{};
     ClosestPoint<dim> cp;
-    if (!nearest(x, k, cp))
+    if (!nearest(x, f, cp))
     {
       for (int d = 0; d < dim; ++d)
         p.side[d][i] = 0;
       p.skin[i] = 0;
       continue;
     }
-    const typename FaceBins<dim>::Face& f = bins_.faces[k];
     const double distance = std::sqrt(cp.distance2);
     Vector s = distance > 0 ? Vector((x - cp.point) / distance)
                             : face_normal(*walls_[f.wall], int(f.face));
@@ -226,11 +227,11 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
     Vector x, old_side;
     for (int d = 0; d < dim; ++d)
       x[d] = p.position[d][i], old_side[d] = p.side[d][i];
-    std::uint32_t k = 0;
+    Face k{};
     ClosestPoint<dim> cp;
     nearest(x, k, cp);
-    const std::uint32_t w = bins_.faces[k].wall;
-    Vector n = face_normal(*walls_[w], int(bins_.faces[k].face));
+    const std::uint32_t w = k.wall;
+    Vector n = face_normal(*walls_[w], int(k.face));
     if (closed_[w])
     {
       // A closed skin: back in front of the nearest face that faces the old side (the
@@ -244,14 +245,14 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
           continue;
         const ClosestPoint<dim> q = closest_point_on_face(*walls_[w], int(f.face), x);
         if (q.distance2 < best)
-          best = q.distance2, k = bins_.entries[e], cp = q;
+          best = q.distance2, k = f, cp = q;
       }
-      n = face_normal(*walls_[w], int(bins_.faces[k].face));
+      n = face_normal(*walls_[w], int(k.face));
     }
     else if (n.dot(old_side) < 0)
       n = -n; // towards the side it came from
     const WallSurface<dim>& wall = *walls_[w];
-    const auto& face = wall.faces[bins_.faces[k].face];
+    const auto& face = wall.faces[k.face];
     Vector v_wall = Vector::Zero();
     for (int j = 0; j < dim; ++j)
       v_wall += cp.weights[j] * wall.velocities[face[j]];
@@ -283,7 +284,7 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
       p.side[d][i] = float(n[d]);
     if (dt > 0)
       for (int j = 0; j < dim; ++j)
-        guard_forces[bins_.faces[k].wall][face[j]] -= cp.weights[j] * mass * dv / dt;
+        guard_forces[k.wall][face[j]] -= cp.weights[j] * mass * dv / dt;
   }
   return n_crossed;
 }
@@ -302,17 +303,16 @@ void ThinSkins<dim>::label_boundary(ParticleArrays<dim>& p, const NeighbourGrid<
     for (int d = 0; d < dim; ++d)
       x[d] = p.position[d][i];
     float side[dim] = {}, skin = 0;
-    std::uint32_t k = 0;
+    Face k{};
     ClosestPoint<dim> best;
     if (nearest_face(grid, x, k, best))
     {
       const double distance = std::sqrt(best.distance2);
-      const Vector s = distance > 0
-                           ? Vector((x - best.point) / distance)
-                           : face_normal(*walls_[bins_.faces[k].wall], int(bins_.faces[k].face));
+      const Vector s = distance > 0 ? Vector((x - best.point) / distance)
+                                    : face_normal(*walls_[k.wall], int(k.face));
       for (int d = 0; d < dim; ++d)
         side[d] = float(s[d]);
-      skin = float(bins_.faces[k].wall + 1);
+      skin = float(k.wall + 1);
     }
     for (int d = 0; d < dim; ++d)
       p.side[d][i] = side[d];

@@ -21,6 +21,7 @@
 
 #include "sph/dummy_wall_particles.h"
 #include "sph/face_bins.h"
+#include "sph/face_tree.h"
 #include "sph/neighbour_grid.h"
 #include "sph/particle_arrays.h"
 #include "sph/wall_geometry.h"
@@ -56,10 +57,11 @@ public:
   using Vector = Eigen::Matrix<double, dim, 1>;
 
   /// Bins the faces of the thin-skin walls (others: nullptr) into the cells within
-  /// `reach` of them; closed[w]: wall w is a closed skin (is_closed). Call after the
-  /// walls moved.
+  /// `reach` of them; closed[w]: wall w is a closed skin (is_closed). Sides within
+  /// `exact_distance` of a skin come from the exact nearest point. Call after the walls
+  /// moved.
   void bin(const std::vector<const WallSurface<dim>*>& walls, const std::vector<char>& closed,
-           const NeighbourGrid<dim>& grid, double reach);
+           const NeighbourGrid<dim>& grid, double reach, double exact_distance);
   bool empty() const { return bins_.faces.empty(); }
 
   /// Sides of fluid particles [first, last) for their current positions (computed with
@@ -79,14 +81,18 @@ public:
                       const std::vector<char>& is_own) const;
 
 private:
-  /// The binned face nearest to x (its entry in bins_.faces, and the nearest point);
-  /// false when no thin-skin face is binned in x's cell.
-  bool nearest_face(const NeighbourGrid<dim>& grid, const Vector& x, std::uint32_t& best,
+  using Face = typename FaceBins<dim>::Face;
+
+  /// The thin-skin face nearest to x and its nearest point; false when x is out of every
+  /// skin's reach (no face binned in x's cell).
+  bool nearest_face(const NeighbourGrid<dim>& grid, const Vector& x, Face& best,
                     ClosestPoint<dim>& closest) const;
 
   std::vector<const WallSurface<dim>*> walls_;
   std::vector<char> closed_;
   FaceBins<dim> bins_;
+  FaceTree<dim> tree_;
+  double exact_distance_ = 0;
   std::vector<std::uint8_t> crossed_;
 };
 
