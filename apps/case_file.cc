@@ -220,10 +220,11 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
                     "Water-height gauges 'name: x, y[, z]' (m; the vertical coordinate is "
                     "ignored), separated by ';' -> h_<name>_m (surface elevation).");
   prm.declare_entry("flow rate", "", Anything(),
-                    "2D flow-rate gauges 'name: x0, y0, x1, y1' (m, the section from "
-                    "(x0, y0) to (x1, y1)), separated by ';' -> q_<name>_m2_s (volume flow, "
-                    "m^2/s per metre of depth, positive to the right of the section's "
-                    "direction).");
+                    "Flow-rate gauges, separated by ';'. 2D: 'name: x0, y0, x1, y1' (m, the "
+                    "section from (x0, y0) to (x1, y1)) -> q_<name>_m2_s (volume flow, m^2/s "
+                    "per metre of depth, positive to the right of the section's direction). "
+                    "3D: 'name: x, y, z, nx, ny, nz' (the whole plane through the point, "
+                    "normal n) -> q_<name>_m3_s (m^3/s, positive along n).");
   prm.leave_subsection();
   declare_body_keys(prm, n_bodies);
   declare_contact_keys(prm);
@@ -327,23 +328,37 @@ template <int dim>
 std::vector<sph::FlowSection> sections_of(const std::string& key, const std::string& text)
 {
   std::vector<sph::FlowSection> out;
+  const std::string form = dim == 2 ? "'name: x0, y0, x1, y1'" : "'name: x, y, z, nx, ny, nz'";
   for (const auto& item : split(text, ';'))
   {
-    if (dim != 2)
-      throw InputError(key, "flow-rate gauges are 2D only");
     const auto colon = item.find(':');
     if (colon == std::string::npos || trim(item.substr(0, colon)).empty())
-      throw InputError(key, "'" + item + "' is not 'name: x0, y0, x1, y1'");
+      throw InputError(key, "'" + item + "' is not " + form);
     const std::string name = trim(item.substr(0, colon));
     if (name.find_first_of(" ,\"") != std::string::npos)
       throw InputError(key, "gauge name '" + name + "' must not contain spaces, commas or quotes");
     const auto v = numbers(key, item.substr(colon + 1));
-    if (v.size() != 4)
-      throw InputError(key, "'" + item + "' needs 4 numbers: x0, y0, x1, y1");
-    const Eigen::Vector2d a(v[0], v[1]), b(v[2], v[3]);
-    if (!((b - a).norm() > 0))
-      throw InputError(key, "'" + item + "': the section has zero length");
-    out.push_back({name, a, b});
+    if (v.size() != 2 * std::size_t(dim))
+      throw InputError(key, "'" + item + "' needs " + std::to_string(2 * dim) +
+                                " numbers: " + form.substr(7, form.size() - 8));
+    sph::FlowSection section;
+    section.name = name;
+    if constexpr (dim == 2)
+    {
+      section.a = Eigen::Vector2d(v[0], v[1]);
+      section.b = Eigen::Vector2d(v[2], v[3]);
+      if (!((section.b - section.a).norm() > 0))
+        throw InputError(key, "'" + item + "': the section has zero length");
+    }
+    else
+    {
+      section.point = Eigen::Vector3d(v[0], v[1], v[2]);
+      section.normal = Eigen::Vector3d(v[3], v[4], v[5]);
+      if (!(section.normal.norm() > 0))
+        throw InputError(key, "'" + item + "': the normal is zero");
+      section.normal.normalize();
+    }
+    out.push_back(section);
   }
   return out;
 }

@@ -64,7 +64,7 @@ std::vector<std::string> FluidSimulation<dim>::probe_columns() const
   for (const auto& p : description_.height_probes)
     c.push_back("h_" + p.name + "_m");
   for (const auto& q : description_.flow_sections)
-    c.push_back("q_" + q.name + "_m2_s");
+    c.push_back("q_" + q.name + (dim == 2 ? "_m2_s" : "_m3_s"));
   // Open boundaries: per zone the particles created and removed so far and the mass flow
   // through its buffer now (kg/s; 2D: kg/(s m)), then the totals.
   for (int k = 0; k < fluid_->n_open_boundaries(); ++k)
@@ -93,9 +93,11 @@ std::vector<double> FluidSimulation<dim>::probe_values() const
     v.push_back(sph::sample_pressure(*fluid_, p.position));
   for (const auto& p : description_.height_probes)
     v.push_back(sph::sample_water_height(*fluid_, p.position));
-  if constexpr (dim == 2)
-    for (const auto& q : description_.flow_sections)
+  for (const auto& q : description_.flow_sections)
+    if constexpr (dim == 2)
       v.push_back(sph::sample_flow_rate(*fluid_, q.a, q.b));
+    else
+      v.push_back(sph::sample_flow_rate(*fluid_, q.point, q.normal));
   for (int k = 0; k < fluid_->n_open_boundaries(); ++k)
   {
     const auto flow = fluid_->open_boundary_flow(k);

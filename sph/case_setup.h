@@ -44,10 +44,14 @@ struct Probe
 
 /// A 2D flow-rate gauge: the section from a to b; flow counts positive to the right of
 /// a -> b (along (dy, -dx)).
+/// A flow-rate gauge. 2D: the section from a to b. 3D: the whole plane through `point`
+/// with unit normal `normal` (a duct's cross-section; the plane must cut the fluid only
+/// where the flow is to be counted).
 struct FlowSection
 {
   std::string name;
-  Eigen::Vector2d a, b;
+  Eigen::Vector2d a, b;          ///< 2D
+  Eigen::Vector3d point, normal; ///< 3D
 };
 
 template <int dim>
@@ -77,7 +81,7 @@ struct CaseDescription
   double output_interval = 0.01;
   std::vector<Probe<dim>> pressure_probes; ///< Pa, Shepard-interpolated
   std::vector<Probe<dim>> height_probes;   ///< free-surface elevation on the vertical line
-  std::vector<FlowSection> flow_sections;  ///< 2D: volume flow rate, m^2/s
+  std::vector<FlowSection> flow_sections;  ///< volume flow rate, 2D m^2/s, 3D m^3/s
 };
 
 /// Derives the defaults (c0, domain) into `c.fluid`, then builds the solver.

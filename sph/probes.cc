@@ -99,6 +99,24 @@ double sample_flow_rate(const FluidSolver<2>& fluid, const Eigen::Vector2d& a,
   return flux / (2 * half);
 }
 
+double sample_flow_rate(const FluidSolver<3>& fluid, const Eigen::Vector3d& point,
+                        const Eigen::Vector3d& normal)
+{
+  const double half = fluid.parameters().particle_spacing;
+  const auto& p = fluid.particles();
+  double flux = 0;
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+  {
+    const Eigen::Vector3d r(p.position[0][i] - point.x(), p.position[1][i] - point.y(),
+                            p.position[2][i] - point.z());
+    if (std::abs(r.dot(normal)) >= half)
+      continue;
+    const Eigen::Vector3d v(p.velocity[0][i], p.velocity[1][i], p.velocity[2][i]);
+    flux += fluid.particle_mass() / p.density[i] * v.dot(normal);
+  }
+  return flux / (2 * half);
+}
+
 template double sample_pressure(const FluidSolver<2>&, const Eigen::Matrix<double, 2, 1>&);
 template double sample_pressure(const FluidSolver<3>&, const Eigen::Matrix<double, 3, 1>&);
 template double sample_water_height(const FluidSolver<2>&, const Eigen::Matrix<double, 2, 1>&);

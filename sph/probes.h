@@ -2,10 +2,10 @@
 // Gauges, as in DualSPHysics' MeasureTool: the pressure at a point is the Shepard
 // interpolation sum p_j V_j W / sum V_j W over fluid neighbours (0 where dry); the water
 // height on a vertical line is the highest point where the fluid's kernel fraction
-// sum V_j W reaches 1/2, sampled every dp/4. The flow rate through a 2D section is the
-// volume flux of the fluid in a slab two particle spacings wide around it,
+// sum V_j W reaches 1/2, sampled every dp/4. The flow rate through a 2D section (3D: a
+// plane) is the volume flux of the fluid in a slab two particle spacings wide around it,
 // Q = (1 / 2 dp) sum_j V_j v_j . n over the particles in the slab (the slab average of
-// v . n times the section's length).
+// v . n times the section's length or the plane's wetted area).
 
 #include "sph/fluid_solver.h"
 
@@ -22,4 +22,8 @@ double sample_water_height(const FluidSolver<dim>& fluid, const Eigen::Matrix<do
 /// along (dy, -dx) of a -> b.
 double sample_flow_rate(const FluidSolver<2>& fluid, const Eigen::Vector2d& a,
                         const Eigen::Vector2d& b);
+/// Volume flow rate through the plane through `point` with unit normal `normal`, m^3/s,
+/// positive along the normal (the same slab estimate, over the whole plane).
+double sample_flow_rate(const FluidSolver<3>& fluid, const Eigen::Vector3d& point,
+                        const Eigen::Vector3d& normal);
 } // namespace chipflex::sph

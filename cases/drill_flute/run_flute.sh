@@ -2,7 +2,7 @@
 # The drill-flute jamming case (docs/drill_flute.md): generates the flute's surfaces,
 # meshes and reduces the chip once, runs the rigid and the flexible chip variants of the
 # 3D case, writes per-chip CSVs and the drill's contact history, and draws
-# OUT/drill_flute.png.
+# OUT/drill_flute.png and the jam pictures OUT/jam_VARIANT.png.
 #
 #   cases/drill_flute/run_flute.sh OUT [END_TIME]
 #     END_TIME  simulated time in s (default: the case files' 0.02)
@@ -47,3 +47,9 @@ for v in ${VARIANTS:-rigid flexible}; do
   grep '^summary:' "$v.log" | sed "s|^summary:|summary: variant=$v|"
 done
 python3 "$here/plot_flute.py" "$out" ${VARIANTS:-rigid flexible}
+# The jam as a picture, per variant at the last frame (needs h5dump: hdf5-tools).
+if command -v h5dump > /dev/null; then
+  for v in ${VARIANTS:-rigid flexible}; do
+    python3 "$here/flute_picture.py" "$out/$v" "$out/jam_$v.png"
+  done
+fi
