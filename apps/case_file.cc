@@ -68,6 +68,14 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
                     "so a stretched particle pair cannot gain more than sqrt(2 |p_min| / rho0) "
                     "when it snaps (-rho0 g H bounds that by the flow's own sqrt(2 g H); "
                     "docs/sph.md). Empty: none (the plain Tait law, as DualSPHysics).");
+  prm.declare_entry("background pressure", "0", Double(0),
+                    "Background (ambient) pressure, Pa, added to the equation of state's "
+                    "pressure in the momentum equation: it holds internal flows whole "
+                    "behind obstacles (a wake's suction down to minus this value). The "
+                    "fluid starts in equilibrium with it; gauges, outputs and open "
+                    "boundaries stay gauge pressures. Internal flows only: at a free surface "
+                    "or a Lennard-Jones wall it pushes the fluid outwards or into the wall "
+                    "(docs/sph.md, \"Background pressure\").");
   prm.declare_entry("no slip walls", "false", Bool(),
                     "Dummy wall particles take 2 v_wall - v_fluid at their mirror point across "
                     "the face (the no-slip velocity of the modified DBC, English et al. 2022), "
@@ -390,6 +398,7 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
                                                    : sph::DensityDiffusionModel::molteni_colagrossi;
   f.density_diffusion_delta = prm.get_double("density diffusion delta");
   f.cut_spray_tension = prm.get("spray tension") == "cut";
+  f.background_pressure = prm.get_double("background pressure");
   if (!trim(prm.get("minimum pressure")).empty())
   {
     const auto p_min = numbers("fluid/minimum pressure", prm.get("minimum pressure"));

@@ -151,6 +151,19 @@ std::string FluidSimulation<dim>::summary() const
       << std::lround(z.thickness() / p.particle_spacing) << " buffer layers, "
       << open_boundary_flow_text(z) << "\n";
   }
+  if (p.background_pressure > 0)
+  {
+    s << "background pressure " << p.background_pressure
+      << " Pa (added in the momentum equation; pressures in outputs, gauges and open "
+         "boundaries are gauge)\n";
+    // A Lennard-Jones wall has no particles to carry the background pressure: the fluid
+    // next to it has a truncated support and is pressed into it.
+    for (int w = 0; w < fluid_->n_walls(); ++w)
+      if (fluid_->wall(w).model == sph::WallModel::lennard_jones && !fluid_->wall(w).fluid_passes)
+        s << "warning: background pressure with the Lennard-Jones wall '" << fluid_->wall(w).name
+          << "': it presses the fluid into the wall; give it `wall model = dummy particles` "
+             "or `thin skin` (docs/sph.md, \"Background pressure\")\n";
+  }
   s << "domain [" << p.domain_min.transpose() << "] - [" << p.domain_max.transpose() << "] m";
   return s.str();
 }

@@ -81,6 +81,16 @@ struct FluidParameters
   /// stretched particles are not catapulted while the fluid keeps the small tension its
   /// free surface needs (docs/sph.md, "Stray particles and spray").
   double minimum_pressure = -std::numeric_limits<double>::infinity();
+  /// Background (ambient) pressure, Pa (>= 0), added to every particle's equation-of-state
+  /// pressure in the momentum equation only. A uniform addition exerts no force where the
+  /// kernel support is full (inside the fluid, at dummy-particle walls and thin skins,
+  /// which carry it too), so the fluid starts in equilibrium with it; where a wake's
+  /// suction would stretch the fluid into tension, the particles keep pushing each other
+  /// apart and the flow stays whole (Adami, Hu & Adams 2013; Marrone et al. 2013). The
+  /// gauges, outputs, open boundaries and the pressure floor stay gauge (relative to it).
+  /// For internal flows: at a free surface or a Lennard-Jones wall the support is
+  /// truncated and the background pressure pushes the fluid outwards or into the wall.
+  double background_pressure = 0;
   /// Dummy wall particles take 2 v_wall - v_fluid(mirror point) instead of the wall's
   /// velocity (the no-slip velocity of English et al.'s modified DBC, 2022): the
   /// no-slip surface is the wall face, not the first dummy layer half a spacing behind

@@ -170,11 +170,12 @@ void FluidSolver<dim>::force_pass()
   const std::size_t nb = p.n_boundary, n = p.size();
   const float mass = float(mass_);
   const float p_min = float(std::max(parameters_.minimum_pressure, -1e30));
+  const float p_background = float(parameters_.background_pressure);
 #pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
   {
     const float rho = p.density[i];
-    const float pressure = std::max(im.eos.pressure(rho), p_min);
+    const float pressure = std::max(im.eos.pressure(rho), p_min) + p_background;
     p.pressure_term[i] = pressure / (rho * rho);
     p.volume[i] = mass / rho;
   }

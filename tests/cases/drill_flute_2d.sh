@@ -13,8 +13,14 @@
 #     test used to stop at 0.02 s, where that swing was still in its last third and the
 #     balance depended on the CPU (+20 % on one machine).
 # The key figures hold bands (docs/drill_flute.md): the barrier's contact force over the
-# last third 20 ... 120 N/m and the pressure drop 7 ... 20 kPa; measured with the strips
-# as thin skins 61.6 N/m and 12.1 kPa (AMD EPYC, native, 2026-12-04); with the former
+# last third 40 ... 500 N/m and the pressure drop 15 ... 70 kPa; measured with the channel
+# held whole by its background pressure (50 kPa) 109 N/m and 30.7 kPa, and 253 N/m and
+# 37.5 kPa in a run with slightly different open-boundary walls (AMD EPYC, native,
+# 2026-12-05): the blocked strips carry the pressure difference, and the force moves with
+# how they come to rest. The channel must stay whole (summary.txt `torn=no`). Before the
+# background pressure, with the channel behind the strips partly empty: 61.6 N/m and
+# 12.1 kPa with the strips as thin
+# skins (AMD EPYC, native, 2026-12-04); with the former
 # Lennard-Jones strips 68.6 N/m and 13.6 kPa (Intel Xeon, native), 73.8 N/m and 13.9 kPa
 # (AMD EPYC, native), 41.9 N/m and 10.6 kPa (AMD EPYC, portable). The force is a train of chip impacts on the barrier, so its
 # mean over 10 ms moves with the trajectory; a lost contact (0) or a reversed one fails.
@@ -42,8 +48,11 @@ awk -F, -v barrier=0.02 -v half=0.00025 -v end=0.03 '
         for (c = 1; c <= 3; ++c) if (barrier - last[c] > 0.0015) { printf "FAIL: chip%d ends at x = %.5f m, not at the barrier\n", c, last[c]; exit 1 }
         printf "chips at %.3f %.3f %.3f mm (barrier 20 mm); last third: barrier contact force %.2f N/m, pressure drop %.0f Pa, inflow %.3f outflow %.3f kg/(s m) (%+.1f %%)\n",
                1e3 * last[1], 1e3 * last[2], 1e3 * last[3], force / n, drop / n, fin / n, fout / n, 100 * (fout / fin - 1)
-        if (!(force / n > 20 && force / n < 120)) { print "FAIL: the barrier force left its band 20 ... 120 N/m"; exit 1 }
-        if (!(drop / n > 7000 && drop / n < 20000)) { print "FAIL: the pressure drop left its band 7 ... 20 kPa"; exit 1 }
+        if (!(force / n > 40 && force / n < 500)) { print "FAIL: the barrier force left its band 40 ... 500 N/m"; exit 1 }
+        if (!(drop / n > 15000 && drop / n < 70000)) { print "FAIL: the pressure drop left its band 15 ... 70 kPa"; exit 1 }
         if (fout / fin > 1.07 || fout / fin < 0.93) { print "FAIL: outflow differs from inflow by more than 7 %"; exit 1 } }
 ' "$dir/out/probes.csv" || exit 1
-echo "ok: the chips stop at the barrier"
+grep '^continuity:' "$dir/out/summary.txt"
+grep -q '^continuity:.*torn=no' "$dir/out/summary.txt" ||
+  fail "the channel tore (summary.txt: $(grep '^continuity:' "$dir/out/summary.txt"))"
+echo "ok: the chips stop at the barrier, the channel stays whole"
