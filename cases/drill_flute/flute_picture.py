@@ -73,6 +73,15 @@ def main():
                 f.writelines(f"{p[0]} {p[1]} {p[2]}\n" for p in t + [t[0]])
                 f.write("\n")
         mm = "($1*1e3)", "($2*1e3)", "($3*1e3)"
+
+        def view(axis):
+            """One panel: the coordinate `axis` (0 x, 1 y) across, z up."""
+            u = f"{mm[axis]}:{mm[2]}"
+            return (f"plot '{fluid_file}' using {u} with points pt 7 ps 0.25 lc rgb '#3060d0' notitle, "
+                    f"'{barrier_file}' using {u} with lines lw 1 lc rgb '#808080' notitle, "
+                    f"'{chip_file}' using {u} with filledcurves closed lc rgb '#d01010' notitle, "
+                    f"'{chip_file}' using {u} with lines lw 1.5 lc rgb '#d01010' notitle\n")
+
         script = f"""set terminal pngcairo size 1100,900 font ',10'
 set output '{png}.tmp'
 set multiplot layout 1,2 title 'Drill flute, {os.path.basename(folder)} chips, {label}: coolant blue, chips red, barrier grey' noenhanced
@@ -81,17 +90,9 @@ set xlabel 'y (mm), across the flute'
 set ylabel 'z (mm), drill axis (coolant flows up)'
 set xrange [-9:9]
 set yrange [-0.5:31]
-plot '{fluid_file}' using {mm[1]}:{mm[2]} with points pt 7 ps 0.25 lc rgb '#3060d0' notitle, \\
-     '{barrier_file}' using {mm[1]}:{mm[2]} with lines lw 1 lc rgb '#808080' notitle, \\
-     '{chip_file}' using {mm[1]}:{mm[2]} with filledcurves closed lc rgb '#d01010' notitle, \\
-     '{chip_file}' using {mm[1]}:{mm[2]} with lines lw 1.5 lc rgb '#d01010' notitle
-set xlabel 'x (mm), flute depth (axis at 0, borehole wall at 10)'
+{view(1)}set xlabel 'x (mm), flute depth (axis at 0, borehole wall at 10)'
 set xrange [-0.5:10.5]
-plot '{fluid_file}' using {mm[0]}:{mm[2]} with points pt 7 ps 0.25 lc rgb '#3060d0' notitle, \\
-     '{barrier_file}' using {mm[0]}:{mm[2]} with lines lw 1 lc rgb '#808080' notitle, \\
-     '{chip_file}' using {mm[0]}:{mm[2]} with filledcurves closed lc rgb '#d01010' notitle, \\
-     '{chip_file}' using {mm[0]}:{mm[2]} with lines lw 1.5 lc rgb '#d01010' notitle
-unset multiplot
+{view(0)}unset multiplot
 """
         subprocess.run(["gnuplot"], input=script, text=True, check=True)
     os.replace(png + ".tmp", png)
