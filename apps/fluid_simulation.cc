@@ -162,7 +162,8 @@ std::string FluidSimulation<dim>::summary() const
       if (fluid_->wall(w).model == sph::WallModel::lennard_jones && !fluid_->wall(w).fluid_passes)
         s << "warning: background pressure with the Lennard-Jones wall '" << fluid_->wall(w).name
           << "': it presses the fluid into the wall; give it `wall model = dummy particles` "
-             "or `thin skin` (docs/sph.md, \"Background pressure\")\n";
+             "(a body or an extra wall may also be a `thin skin`; docs/sph.md, \"Background "
+             "pressure\")\n";
   }
   s << "domain [" << p.domain_min.transpose() << "] - [" << p.domain_max.transpose() << "] m";
   return s.str();
