@@ -202,14 +202,18 @@ void FluidSolver<dim>::prescribe_open_boundaries()
     p.density[i] = p.density_previous[i] = float(rho);
   }
 
-  // Walls beside an outlet's buffer (a channel's walls reaching into or past it): near
-  // the buffer's far face their dummy particles see the buffer's particles arrive from
-  // upstream only, so their continuity sum compresses them without end (measured: 1.55
-  // rho0 within 0.1 s in a 2D channel; 3.5 rho0 reported in a Turek & Hron channel), and
-  // nearer the plane they drift from the outlet's state. They take the density of the
+  // With a background pressure, walls beside an outlet's buffer (a channel's walls
+  // reaching into or past it): near the buffer's far face their dummy particles see the
+  // buffer's particles arrive from upstream only, so their continuity sum compresses them
+  // without end, and the buffer particles beside them then cut the time step (measured:
+  // the 2D flute at 50 kPa took about 40 times the steps). They take the density of the
   // outlet's prescribed pressure at their place and keep it through the step, as the
-  // buffer particles do. (Beside an inlet no growth was seen; those walls stay dynamic.)
+  // buffer particles do. Without a background pressure the walls stay dynamic, as before:
+  // there the hold moved the Poiseuille channel's outflow from +0.15 to +0.93 % of its
+  // inflow on one floating-point path (docs/sph.md, "Walls at open ends").
   im.walls_beside_buffers.clear();
+  if (!(parameters_.background_pressure > 0))
+    return;
   const double reach = 2 * h_ + parameters_.particle_spacing;
   for (std::size_t i = 0; i < nb; ++i)
   {
