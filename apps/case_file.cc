@@ -336,7 +336,8 @@ template <int dim>
 std::vector<sph::FlowSection> sections_of(const std::string& key, const std::string& text)
 {
   std::vector<sph::FlowSection> out;
-  const std::string form = dim == 2 ? "'name: x0, y0, x1, y1'" : "'name: x, y, z, nx, ny, nz'";
+  const std::string numbers_form = dim == 2 ? "x0, y0, x1, y1" : "x, y, z, nx, ny, nz";
+  const std::string form = "'name: " + numbers_form + "'";
   for (const auto& item : split(text, ';'))
   {
     const auto colon = item.find(':');
@@ -348,7 +349,7 @@ std::vector<sph::FlowSection> sections_of(const std::string& key, const std::str
     const auto v = numbers(key, item.substr(colon + 1));
     if (v.size() != 2 * std::size_t(dim))
       throw InputError(key, "'" + item + "' needs " + std::to_string(2 * dim) +
-                                " numbers: " + form.substr(7, form.size() - 8));
+                                " numbers: " + numbers_form);
     sph::FlowSection section;
     section.name = name;
     if constexpr (dim == 2)

@@ -16,10 +16,7 @@ template <int dim>
 struct FaceBins
 {
   using Vector = Eigen::Matrix<double, dim, 1>;
-  struct Face
-  {
-    std::uint32_t wall, face;
-  };
+  using Face = WallFace;
   std::vector<Face> faces;                   ///< every face of the walls binned
   std::vector<std::uint32_t> start, entries; ///< cell c holds faces[entries[start[c] ...]]
 

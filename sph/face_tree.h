@@ -21,10 +21,7 @@ class FaceTree
 {
 public:
   using Vector = Eigen::Matrix<double, dim, 1>;
-  struct Face
-  {
-    std::uint32_t wall, face;
-  };
+  using Face = WallFace;
 
   /// Builds the tree over the faces of walls[w] (nullptr: left out).
   void build(const std::vector<const WallSurface<dim>*>& walls)

@@ -167,11 +167,7 @@ bool ThinSkins<dim>::nearest_face(const NeighbourGrid<dim>& grid, const Vector& 
   // Exact within a spacing, where the guard needs the true foot point; farther out the
   // side only has to tell the sides apart (the mask's thresholds are cosines of +-1/2,
   // and a point at most 1.2 times as far as the nearest is seen within 34 degrees).
-  typename FaceTree<dim>::Face f{};
-  if (!tree_.nearest(x, exact_distance_, 0.2, f, closest))
-    return false;
-  best = {f.wall, f.face};
-  return true;
+  return tree_.nearest(x, exact_distance_, 0.2, best, closest);
 }
 
 template <int dim>

@@ -81,7 +81,7 @@ public:
                       const std::vector<char>& is_own) const;
 
 private:
-  using Face = typename FaceBins<dim>::Face;
+  using Face = WallFace;
 
   /// The thin-skin face nearest to x and its nearest point; false when x is out of every
   /// skin's reach (no face binned in x's cell).

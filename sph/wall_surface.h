@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,12 @@ struct LennardJonesParameters
   double k = 0;  ///< force scale F(0) (0: derive from spacing and expected pressure)
   double R = 0;  ///< cut-off distance (0: derive from the particle spacing)
   double r0 = 0; ///< equilibrium distance, F(r0) = 0 (0: derive from the particle spacing)
+};
+
+/// One face of one wall: the wall's index in the list searched, the face's index in it.
+struct WallFace
+{
+  std::uint32_t wall, face;
 };
 
 template <int dim>
