@@ -81,6 +81,15 @@ void declare_keys(ParameterHandler& prm, int n_bodies)
                     "the face (the no-slip velocity of the modified DBC, English et al. 2022), "
                     "so the fluid sticks at the wall face rather than at the first dummy "
                     "layer; false: the wall's velocity (DualSPHysics' DBC).");
+  prm.declare_entry("particle shifting", "automatic", Selection("automatic|on|off"),
+                    "Particle shifting after each step (Fickian, Lind et al. 2012, with "
+                    "Skillen et al.'s D = A h |v| dt and Sun et al.'s tensile term): keeps the "
+                    "particles near a lattice, so no voids open behind bodies in an internal "
+                    "flow and no pairs clump; particles at a free surface are not shifted. "
+                    "automatic: on for a case with an inlet or an outlet (an internal flow), "
+                    "off otherwise (docs/sph.md, \"Particle shifting\").");
+  prm.declare_entry("shifting coefficient", "2", Double(0),
+                    "A in the shift's diffusion coefficient D = A h |v| dt (2, as DualSPHysics).");
   prm.declare_entry("hydrostatic start", "true", Bool(),
                     "Start each fluid block with its hydrostatic density (no initial wave).");
   prm.leave_subsection();
@@ -421,6 +430,8 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
     f.maximum_density_ratio = limits[1] / f.reference_density;
   }
   f.no_slip_walls = prm.get_bool("no slip walls");
+  const std::string shifting = prm.get("particle shifting");
+  const double shifting_coefficient = prm.get_double("shifting coefficient");
   c.hydrostatic_start = prm.get_bool("hydrostatic start");
   prm.leave_subsection();
 
@@ -596,6 +607,10 @@ void fill(ParameterHandler& prm, sph::CaseDescription<dim>& c, const std::string
     prm.leave_subsection();
   }
   prm.leave_subsection();
+
+  // An internal flow (an inlet or an outlet) is shifted unless the case says otherwise.
+  const bool shift = shifting == "on" || (shifting == "automatic" && !c.open_boundaries.empty());
+  f.shifting_coefficient = shift ? shifting_coefficient : 0;
 
   prm.enter_subsection("probes");
   c.pressure_probes = probes_of<dim>("probes/pressure", prm.get("pressure"));

@@ -151,6 +151,9 @@ std::string FluidSimulation<dim>::summary() const
       << std::lround(z.thickness() / p.particle_spacing) << " buffer layers, "
       << open_boundary_flow_text(z) << "\n";
   }
+  if (p.shifting_coefficient > 0)
+    s << "particle shifting: D = " << p.shifting_coefficient
+      << " h |v| dt, none at free surfaces\n";
   if (p.background_pressure > 0)
   {
     s << "background pressure " << p.background_pressure
@@ -180,6 +183,17 @@ std::string FluidSimulation<dim>::flow_summary() const
   // crossed a skin; sph/thin_skins.h).
   if (fluid_->has_thin_skins())
     s += " guarded_particles=" + std::to_string(fluid_->n_guarded());
+  // Particle shifting measures the closest fluid pair after every step: a clumping check
+  // (below 0.1 dp, two particles sit on one point).
+  const auto& p = fluid_->parameters();
+  if (p.shifting_coefficient > 0 && fluid_->closest_fluid_pair() < 1e300)
+  {
+    std::ostringstream c;
+    c.precision(3);
+    c << " closest_fluid_pair_dp=" << fluid_->closest_fluid_pair() / p.particle_spacing
+      << " closest_fluid_pair_t_s=" << fluid_->closest_fluid_pair_time();
+    s += c.str();
+  }
   return s;
 }
 

@@ -96,6 +96,11 @@ struct FluidParameters
   /// no-slip surface is the wall face, not the first dummy layer half a spacing behind
   /// it (sph/fluid_solver_no_slip.cc). Off by default (DualSPHysics' plain DBC).
   bool no_slip_walls = false;
+  /// Particle shifting after each step (sph/particle_shifting.h): the coefficient A of
+  /// D = A h |v| dt; 0 switches it off. It keeps the particles near a lattice, so voids do
+  /// not open behind bodies in an internal flow and pairs do not clump; particles at a
+  /// free surface are not shifted.
+  double shifting_coefficient = 0;
   TimeScheme scheme = TimeScheme::verlet;
   int verlet_euler_every = 40;
   double cfl = 0.2;

@@ -450,6 +450,8 @@ double FluidSolver<dim>::step()
     force_pass();
     correct_symplectic(dt);
   }
+  if (parameters_.shifting_coefficient > 0)
+    shift_particles(dt);
   time_ += dt;
   ++step_;
   run_hooks(HookPoint::after_step);

@@ -60,6 +60,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -210,6 +211,11 @@ public:
   double peak_fluid_speed_time() const { return peak_speed_time_; }
   /// Where the fastest particle was then (tells a method's squeeze from the flow's jet).
   const Vector& peak_fluid_speed_position() const { return peak_speed_position_; }
+  /// Smallest distance between two interacting fluid particles seen at any step so far,
+  /// over the particles that are shifted (not in an open boundary's buffer, not beside a
+  /// thin skin); particle shifting only (its sums measure it; infinity otherwise), m.
+  double closest_fluid_pair() const { return closest_pair_; }
+  double closest_fluid_pair_time() const { return closest_pair_time_; }
   /// Every particle (fluid and boundary) has the mass rho0 dp^dim (2D: per metre).
   double particle_mass() const { return mass_; }
   double speed_of_sound() const { return parameters_.speed_of_sound; }
@@ -236,6 +242,7 @@ private:
   void prescribe_open_boundaries();
   void freeze_open_boundaries();
   void mirror_wall_velocities();
+  void shift_particles(double dt);
   /// Sides of the boundary particles [first, last) from their faces (thin skins).
   void update_dummy_sides(std::size_t first, std::size_t last);
   /// Sides of the fluid particles near thin skins, the guard (sph/thin_skins.h).
@@ -266,6 +273,7 @@ private:
   std::vector<std::int64_t> zone_created_, zone_removed_;
   double peak_speed_ = 0, peak_speed_time_ = 0;
   Vector peak_speed_position_ = Vector::Zero();
+  double closest_pair_ = std::numeric_limits<double>::infinity(), closest_pair_time_ = 0;
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

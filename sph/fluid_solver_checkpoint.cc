@@ -72,6 +72,11 @@ void FluidSolver<dim>::save(Hdf5File& file, const std::string& group) const
   for (int d = 0; d < dim; ++d)
     file.write_attribute(group, "peak_fluid_speed_position_" + std::to_string(d),
                          peak_speed_position_[d]);
+  if (closest_pair_ < 1e300)
+  {
+    file.write_attribute(group, "closest_fluid_pair", closest_pair_);
+    file.write_attribute(group, "closest_fluid_pair_time", closest_pair_time_);
+  }
   const std::size_t nl = lost_.size();
   file.write_attribute(group, "n_lost", std::int64_t(nl));
   if (nl > 0)
@@ -225,6 +230,13 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
   lost_.clear();
   peak_speed_ = peak_speed_time_ = 0;
   peak_speed_position_.setZero();
+  closest_pair_ = std::numeric_limits<double>::infinity();
+  closest_pair_time_ = 0;
+  if (file.has_attribute(group, "closest_fluid_pair"))
+  {
+    closest_pair_ = file.read_double_attribute(group, "closest_fluid_pair");
+    closest_pair_time_ = file.read_double_attribute(group, "closest_fluid_pair_time");
+  }
   if (file.has_attribute(group, "n_lost"))
   {
     if (std::size_t(file.read_integer_attribute(group, "n_fluid_created")) != n_fluid_created_)

@@ -10,35 +10,44 @@ namespace chipflex::sph
 {
 namespace
 {
-template <int dim, bool count_fill, bool sided, class Viscosity, class Diffusion>
+template <int dim, bool count_fill, bool sided, bool shifting, class Viscosity, class Diffusion>
 float run_pass(const ForcePassInput<dim>& in, const PairPolicies& policies, std::size_t nb,
                std::size_t n)
 {
   const auto& visc = policies.get<Viscosity>();
   const auto& diff = policies.get<Diffusion>();
-  return force_pass<dim, count_fill, sided>(in, visc, diff, nb, n);
+  return force_pass<dim, count_fill, sided, shifting>(in, visc, diff, nb, n);
 }
 
-template <int dim, bool count_fill, bool sided, class Viscosity>
+template <int dim, bool count_fill, bool sided, bool shifting, class Viscosity>
 auto select_diffusion(DensityDiffusionModel model)
 {
   switch (model)
   {
   case DensityDiffusionModel::none:
-    return &run_pass<dim, count_fill, sided, Viscosity, NoDensityDiffusion>;
+    return &run_pass<dim, count_fill, sided, shifting, Viscosity, NoDensityDiffusion>;
   case DensityDiffusionModel::molteni_colagrossi:
-    return &run_pass<dim, count_fill, sided, Viscosity, MolteniColagrossiDiffusion>;
+    return &run_pass<dim, count_fill, sided, shifting, Viscosity, MolteniColagrossiDiffusion>;
   default:
-    return &run_pass<dim, count_fill, sided, Viscosity, FourtakasDiffusion>;
+    return &run_pass<dim, count_fill, sided, shifting, Viscosity, FourtakasDiffusion>;
   }
 }
 
-template <int dim, bool count_fill, bool sided>
+template <int dim, bool count_fill, bool sided, bool shifting>
 auto select_viscosity(const FluidParameters<dim>& p)
 {
   return p.viscosity == ViscosityModel::artificial
-             ? select_diffusion<dim, count_fill, sided, ArtificialViscosity>(p.density_diffusion)
-             : select_diffusion<dim, count_fill, sided, LaminarViscosity>(p.density_diffusion);
+             ? select_diffusion<dim, count_fill, sided, shifting, ArtificialViscosity>(
+                   p.density_diffusion)
+             : select_diffusion<dim, count_fill, sided, shifting, LaminarViscosity>(
+                   p.density_diffusion);
+}
+
+template <int dim, bool count_fill, bool sided>
+auto select_shifting(const FluidParameters<dim>& p)
+{
+  return p.shifting_coefficient > 0 ? select_viscosity<dim, count_fill, sided, true>(p)
+                                    : select_viscosity<dim, count_fill, sided, false>(p);
 }
 } // namespace
 
@@ -67,13 +76,15 @@ void FluidSolver<dim>::Impl::setup(const FluidParameters<dim>& p, bool sided)
     policies.fourtakas.g_over_c2[d] =
         d < dim ? float(p.reference_density * p.gravity[d] / (c0 * c0)) : 0.0f;
   // The spray filling costs ~8 % of the force loop, the thin skins' visibility mask
-  // more: each is compiled in only where it is used.
+  // and particle shifting more: each is compiled in only where it is used.
   if (sided)
-    pass = p.cut_spray_tension ? select_viscosity<dim, true, true>(p)
-                               : select_viscosity<dim, false, true>(p);
+    pass = p.cut_spray_tension ? select_shifting<dim, true, true>(p)
+                               : select_shifting<dim, false, true>(p);
   else
-    pass = p.cut_spray_tension ? select_viscosity<dim, true, false>(p)
-                               : select_viscosity<dim, false, false>(p);
+    pass = p.cut_spray_tension ? select_shifting<dim, true, false>(p)
+                               : select_shifting<dim, false, false>(p);
+  const double t_dp = 1 - 0.5 * p.particle_spacing / h;
+  inverse_w_dp = float(1 / (t_dp * t_dp * t_dp * t_dp * (5 - 4 * t_dp)));
 }
 
 template <int dim>
@@ -202,6 +213,20 @@ void FluidSolver<dim>::force_pass()
     in.side[d] = p.side[d].data();
   in.skin = p.skin.data();
   in.fill_factor = im.fill_factor;
+  in.inverse_w_dp = im.inverse_w_dp;
+  in.boundary_volume = float(mass_ / parameters_.reference_density);
+  if (parameters_.shifting_coefficient > 0)
+  {
+    for (int d = 0; d < dim; ++d)
+    {
+      im.shift_sum[d].resize(n - nb);
+      in.shift_sum[d] = im.shift_sum[d].data();
+    }
+    im.position_divergence.resize(n - nb);
+    im.closest.resize(n - nb);
+    in.position_divergence = im.position_divergence.data();
+    in.closest = im.closest.data();
+  }
   dot_rr2_max_ = im.pass(in, im.policies, nb, n);
 
   for (std::size_t w = 0; w < vertex_forces_.size(); ++w)

@@ -14,6 +14,8 @@
 #include "sph/viscosity_models.h"
 #include "sph/wendland_kernel.h"
 
+#include <array>
+
 namespace chipflex::sph
 {
 struct PairPolicies
@@ -61,6 +63,11 @@ struct FluidSolver<dim>::Impl
   /// Boundary particles beside an open boundary's buffer in this pass: their density is
   /// prescribed like the buffer's (prescribe_open_boundaries) and kept (freeze_...).
   std::vector<std::uint32_t> walls_beside_buffers;
+  /// Particle shifting (sph/particle_shifting.h), by fluid particle: the last pass's
+  /// sums, read by the update right after it.
+  std::array<std::vector<float>, dim> shift_sum;
+  std::vector<float> position_divergence, closest;
+  float inverse_w_dp = 0;
   TaitEquationOfState eos{1000, 10, 7};
   PairPolicies policies;
   PassFunction pass = nullptr;

@@ -19,6 +19,10 @@
 // is masked out of every sum unless its sides agree: side_i . side_j >= -1/2 for two
 // fluid particles (not on opposite sides), >= 1/2 for a fluid and a boundary particle
 // (the dummy particle serves the fluid particle's side, not a face beside it).
+// With particle shifting (sph/particle_shifting.h) a fluid particle also gathers the
+// concentration gradient sum_j V_j [1 + R (W_ij/W(dp))^4] F r_ij, the divergence of the
+// position -sum_j V_j F r_ij^2 (V_j = m / rho0 for a boundary particle), and its closest
+// fluid neighbour's distance.
 
 #include "sph/density_diffusion.h"
 #include "sph/neighbour_grid.h"
@@ -51,16 +55,27 @@ struct ForcePassInput
   float* a[dim];
   float* density_rate;
   float* fill;
+  // Particle shifting only, by fluid particle (index i - n_boundary):
+  float inverse_w_dp; ///< W(t)/W(dp) = t^4 (5 - 4t) * this, t = 1 - r/(2h)
+  /// A boundary particle's volume in the concentration, m / rho0: its dynamic density
+  /// is the wall's pressure, not its spacing, and a wall squeezed to a higher density
+  /// would otherwise read as sparse and draw the fluid into it.
+  float boundary_volume;
+  float* shift_sum[dim];      ///< the concentration gradient's sum
+  float* position_divergence; ///< div r
+  float* closest;             ///< the closest fluid neighbour's squared distance
 };
 
 namespace detail
 {
-template <int dim, bool neighbour_is_fluid, bool count_fill, bool sided, class Viscosity,
-          class Diffusion>
+/// acc: acceleration (3), density rate, filling count, shifting sums (3) and div r;
+/// acc_min: the closest fluid neighbour's squared distance (the particle itself excluded).
+template <int dim, bool neighbour_is_fluid, bool count_fill, bool sided, bool shifting,
+          class Viscosity, class Diffusion>
 inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
                    std::uint32_t jb, std::uint32_t je, const double (&xi)[3], const float (&vi)[3],
                    float rhoi, float pti, const float (&si)[4], float min_facing, float mj,
-                   float (&acc)[5], float& dot_rr2_max)
+                   float (&acc)[9], float& acc_min, float& dot_rr2_max)
 {
   const float* const s0 = sided ? in.side[0] : nullptr;
   const float* const s1 = sided ? in.side[1] : nullptr;
@@ -81,9 +96,12 @@ inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const D
   const float inv_h = in.inverse_h, kf = in.kernel_factor;
   const double xi0 = xi[0], xi1 = xi[1], xi2 = xi[2];
   const float vi0 = vi[0], vi1 = vi[1], vi2 = vi[2];
+  const float iw = in.inverse_w_dp;
   float a0 = 0, a1 = 0, a2 = 0, ar = 0, aw = 0, vmax = dot_rr2_max;
+  float g0 = 0, g1 = 0, g2 = 0, dv = 0, closest = acc_min;
   const std::ptrdiff_t end = je;
-#pragma omp simd reduction(+ : a0, a1, a2, ar, aw) reduction(max : vmax)
+#pragma omp simd reduction(+ : a0, a1, a2, ar, aw, g0, g1, g2, dv) reduction(max : vmax)          \
+    reduction(min : closest)
   for (std::ptrdiff_t j = jb; j < end; ++j)
   {
     const float dx0 = float(xi0 - x0[j]);
@@ -140,20 +158,44 @@ inline void gather(const ForcePassInput<dim>& in, const Viscosity& visc, const D
       rate -= diff.two_delta_h_c0 * drho * fac * vol[j];
     }
     ar += rate;
+    if constexpr (shifting)
+    {
+      const float vf = (neighbour_is_fluid ? vol[j] : in.boundary_volume) * fac; // V_j F_ij
+      // Floored: near the support's edge w^4 ~ t^16 would fall into the denormal range,
+      // whose arithmetic is many times slower, and a regular lattice (the shifted one) has
+      // many pairs there (the diagonal 2 dp, 2 dp lies at 2h in 2D).
+      const float w = std::max(t3 * t * (5.0f - 4.0f * t) * iw, 1e-6f);
+      const float w2 = w * w;
+      const float g = vf * (1.0f + 0.2f * w2 * w2);
+      g0 += g * dx0;
+      g1 += g * dx1;
+      g2 += g * dx2;
+      dv -= vf * r2;
+      if constexpr (neighbour_is_fluid)
+        // Pairs that interact only (not across a thin skin), not the particle itself (the
+        // one pair at r = 0: float compares only, an index compare halves the loop's
+        // speed). A select, not a branch.
+        closest = std::min(closest, (t > 0.0f && r2 > 0.0f) ? r2 : 3.4e38f);
+    }
   }
   acc[0] += a0;
   acc[1] += a1;
   acc[2] += a2;
   acc[3] += ar;
   acc[4] += aw;
+  acc[5] += g0;
+  acc[6] += g1;
+  acc[7] += g2;
+  acc[8] += dv;
+  acc_min = closest;
   dot_rr2_max = vmax;
 }
 
 /// Gathers for particles [first, last); call inside a parallel region (orphaned `omp
 /// for`). Dynamic chunks: each particle's sums do not depend on which thread computes
 /// them, and a thread descheduled on a busy machine does not hold the others up.
-template <int dim, bool target_is_fluid, bool count_fill, bool sided, class Viscosity,
-          class Diffusion>
+template <int dim, bool target_is_fluid, bool count_fill, bool sided, bool shifting,
+          class Viscosity, class Diffusion>
 float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
                     std::size_t first, std::size_t last)
 {
@@ -170,8 +212,8 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
         si[d] = in.side[d][i];
       si[3] = in.skin[i];
     }
-    float acc[5] = {0, 0, 0, 0, 0};
-    float vmax = 0;
+    float acc[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    float vmax = 0, closest = 3.4e38f;
     const std::int64_t c = in.cell[i];
     auto rows = [&](auto masked)
     {
@@ -179,13 +221,13 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
       for (int r = 0; r < NeighbourGrid<dim>::n_rows; ++r)
       {
         const std::int64_t base = c + in.rows[r];
-        gather<dim, true, count_fill, mask>(
+        gather<dim, true, count_fill, mask, shifting>(
             in, visc, diff, in.fluid_start[base], in.fluid_start[base + 3], xi, vi, rhoi, pti, si,
-            target_is_fluid ? -0.5f : 0.5f, in.mass_fluid, acc, vmax);
+            target_is_fluid ? -0.5f : 0.5f, in.mass_fluid, acc, closest, vmax);
         if constexpr (target_is_fluid)
-          gather<dim, false, count_fill, mask>(in, visc, diff, in.boundary_start[base],
-                                               in.boundary_start[base + 3], xi, vi, rhoi, pti, si,
-                                               0.5f, in.mass_boundary, acc, vmax);
+          gather<dim, false, count_fill, mask, shifting>(
+              in, visc, diff, in.boundary_start[base], in.boundary_start[base + 3], xi, vi, rhoi,
+              pti, si, 0.5f, in.mass_boundary, acc, closest, vmax);
       }
     };
     // A particle near no thin skin masks nothing: it takes the plain loop (one branch
@@ -199,6 +241,14 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
     in.density_rate[i] = acc[3];
     if constexpr (count_fill)
       in.fill[i] = in.fill_factor * acc[4];
+    if constexpr (shifting)
+    {
+      const std::size_t k = i - first;
+      for (int d = 0; d < dim; ++d)
+        in.shift_sum[d][k] = acc[5 + d];
+      in.position_divergence[k] = acc[8];
+      in.closest[k] = closest;
+    }
     dot_rr2_max = std::max(dot_rr2_max, vmax);
   };
   // Boundary results are not read by the fluid loop: no barrier between the two.
@@ -223,16 +273,17 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
 /// reaction per unit mass (no density diffusion, as in DualSPHysics); fluid particles
 /// [n_boundary, n) their accelerations (without gravity and walls) and density rates.
 /// Returns max v_ij.r_ij/(r^2+eta2) over candidate pairs, for the time step.
-template <int dim, bool count_fill, bool sided, class Viscosity, class Diffusion>
+template <int dim, bool count_fill, bool sided, bool shifting, class Viscosity, class Diffusion>
 float force_pass(const ForcePassInput<dim>& in, const Viscosity& visc, const Diffusion& diff,
                  std::size_t n_boundary, std::size_t n)
 {
   float dot_rr2_max = 0;
 #pragma omp parallel if (n > parallel_threshold)
   {
-    detail::particle_loop<dim, false, false, sided>(in, visc, NoDensityDiffusion{}, 0, n_boundary);
-    const float m =
-        detail::particle_loop<dim, true, count_fill, sided>(in, visc, diff, n_boundary, n);
+    detail::particle_loop<dim, false, false, sided, false>(in, visc, NoDensityDiffusion{}, 0,
+                                                           n_boundary);
+    const float m = detail::particle_loop<dim, true, count_fill, sided, shifting>(in, visc, diff,
+                                                                                  n_boundary, n);
 #pragma omp critical(chipflex_sph_force_pass_max)
     dot_rr2_max = std::max(dot_rr2_max, m); // a maximum: order-independent
   }

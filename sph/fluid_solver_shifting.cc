@@ -1,0 +1,60 @@
+// FluidSolver: particle shifting after each step (sph/particle_shifting.h).
+
+#include "sph/fluid_solver_impl.h"
+#include "sph/particle_shifting.h"
+
+#include <cmath>
+
+namespace chipflex::sph
+{
+template <int dim>
+void FluidSolver<dim>::shift_particles(double dt)
+{
+  auto& p = particles_;
+  auto& im = *impl_;
+  const std::size_t nb = p.n_boundary, n = p.size();
+  if (n == nb)
+    return;
+  // D = A h |v_i| dt: proportional to the particle's own speed (Skillen et al. 2013), so a
+  // fluid at rest (a hydrostatic tank) is left exactly as it is.
+  const float a_h_dt = float(parameters_.shifting_coefficient * h_ * dt);
+  const float cap = float(0.1 * parameters_.particle_spacing);
+  float closest = 3.4e38f;
+  for (std::size_t i = nb; i < n; ++i)
+  {
+    const std::size_t k = i - nb;
+    // Buffer particles keep their lattice (the open boundary sets them; an inlet particle
+    // that flowed back sits beside its own replacement). Particles beside a thin skin stay
+    // too: shifted there, the 2D drill flute tore behind its chips (11.6 % of the fluid
+    // gone, against 3.5 % held); the skin's guard keeps them on their side. The clumping
+    // check covers the particles that are shifted.
+    if ((!p.zone.empty() && p.zone[i] != 0) || (!p.skin.empty() && p.skin[i] != 0.0f))
+      continue;
+    // Within reach of an open boundary's plane a fluid particle meets the buffer particles
+    // the boundary places: left out of the clumping check.
+    bool near_plane = false;
+    for (const auto& z : zones_)
+      near_plane = near_plane || std::abs(p.position[z.axis][i] - z.plane()) < 2 * h_;
+    if (!near_plane)
+      closest = std::min(closest, im.closest[k]);
+    float sum[dim];
+    for (int d = 0; d < dim; ++d)
+      sum[d] = im.shift_sum[d][k];
+    double dr[dim];
+    float v2 = 0;
+    for (int d = 0; d < dim; ++d)
+      v2 += p.velocity[d][i] * p.velocity[d][i];
+    particle_shift<dim>(sum, im.position_divergence[k], a_h_dt * std::sqrt(v2), cap, dr);
+    for (int d = 0; d < dim; ++d)
+      p.position[d][i] += dr[d];
+  }
+  if (double(std::sqrt(closest)) < closest_pair_)
+  {
+    closest_pair_ = std::sqrt(double(closest));
+    closest_pair_time_ = time_ + dt;
+  }
+}
+
+template void FluidSolver<2>::shift_particles(double);
+template void FluidSolver<3>::shift_particles(double);
+} // namespace chipflex::sph
