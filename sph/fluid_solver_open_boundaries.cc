@@ -202,18 +202,15 @@ void FluidSolver<dim>::prescribe_open_boundaries()
     p.density[i] = p.density_previous[i] = float(rho);
   }
 
-  // With a background pressure, walls beside an outlet's buffer (a channel's walls
-  // reaching into or past it): near the buffer's far face their dummy particles see the
-  // buffer's particles arrive from upstream only, so their continuity sum compresses them
-  // without end, and the buffer particles beside them then cut the time step (measured:
-  // the 2D flute at 50 kPa took about 40 times the steps). They take the density of the
-  // outlet's prescribed pressure at their place and keep it through the step, as the
-  // buffer particles do. Without a background pressure the walls stay dynamic, as before:
-  // there the hold moved the Poiseuille channel's outflow from +0.15 to +0.93 % of its
-  // inflow on one floating-point path (docs/sph.md, "Walls at open ends").
+  // Walls beside an outlet's buffer (a channel's walls reaching into or past it): near the
+  // buffer's far face their dummy particles see the buffer's particles arrive from
+  // upstream only, so their continuity sum compresses them without end (1,551 kg/m^3
+  // within 0.1 s in a test channel), and with a background pressure the buffer particles
+  // beside them then cut the time step (the 2D flute at 50 kPa took about 40 times the
+  // steps). They take the density of the outlet's prescribed pressure at their place and
+  // keep it through the step, as the buffer particles do (docs/sph.md, "Walls at open
+  // ends").
   im.walls_beside_buffers.clear();
-  if (!(parameters_.background_pressure > 0))
-    return;
   const double reach = 2 * h_ + parameters_.particle_spacing;
   for (std::size_t i = 0; i < nb; ++i)
   {

@@ -27,7 +27,8 @@ public:
   {
     keys.declare("outline", "", "text",
                  "2D: polyline x1, y1, x2, y2, ... in frame coordinates, m; the fluid lies on "
-                 "the right of travel.");
+                 "the right of travel. Ending at its first point closes it (a closed skin: "
+                 "fluid starting inside is removed).");
     keys.declare("surface", "", "text",
                  "gmsh .msh or STL surface in frame coordinates (instead of `outline`), m.");
     keys.declare("surface group", "", "text", "Physical group of `surface`; empty: all.");
@@ -61,10 +62,19 @@ public:
         x[0] = v[i], x[1] = v[i + 1];
         mesh.vertices.push_back(x);
       }
-      for (int i = 0; i + 1 < int(mesh.vertices.size()); ++i)
+      // A polygon given with its first point repeated at the end is closed: the last
+      // segment ends at vertex 0, so the skin is closed (fluid that starts inside it is
+      // removed, docs/bodies.md) rather than two loose ends that happen to meet.
+      const bool closed =
+          mesh.vertices.size() > 3 && (mesh.vertices.back() - mesh.vertices.front()).norm() <=
+                                          1e-9 * (mesh.vertices[1] - mesh.vertices[0]).norm();
+      if (closed)
+        mesh.vertices.pop_back();
+      const int n = int(mesh.vertices.size());
+      for (int i = 0; i + 1 < n + (closed ? 1 : 0); ++i)
       {
         std::array<int, dim> f{};
-        f[0] = i, f[1] = i + 1;
+        f[0] = i, f[1] = (i + 1) % n;
         mesh.faces.push_back(f);
       }
     }
