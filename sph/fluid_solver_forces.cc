@@ -83,8 +83,9 @@ void FluidSolver<dim>::Impl::setup(const FluidParameters<dim>& p, bool sided)
   else
     pass = p.cut_spray_tension ? select_shifting<dim, true, false>(p)
                                : select_shifting<dim, false, false>(p);
-  const double t_dp = 1 - 0.5 * p.particle_spacing / h;
-  inverse_w_dp = float(1 / (t_dp * t_dp * t_dp * t_dp * (5 - 4 * t_dp)));
+  // The force loop forms W(r) / alpha = t^4 (5 - 4t) from its t; W(dp) from the kernel.
+  const WendlandKernel<dim> kernel(h);
+  inverse_w_dp = float(kernel.alpha / kernel.value(p.particle_spacing));
 }
 
 template <int dim>
