@@ -17,8 +17,8 @@
 # The key figures hold bands (docs/drill_flute.md): the barrier's contact force over the
 # last third 40 ... 500 N/m and the pressure drop 5 ... 70 kPa. With particle shifting
 # (on for internal flows) and the channel held whole by its background pressure (50 kPa):
-# 125.4 N/m and 13.3 kPa, and 110.5 N/m and 15.2 kPa with constants one float bit
-# apart (AMD EPYC, native, 2026-12-05); the drop's 2 ms means over the
+# 125.4 N/m and 13.3 kPa, and 110.5 N/m and 15.2 kPa on an earlier build of the
+# same method (AMD EPYC, native, 2026-12-05); the drop's 2 ms means over the
 # last third run from 8 to 38 kPa as the strips settle, shift and clatter, so its mean
 # moves with the trajectory. Without shifting 109 N/m and 30.7 kPa (2 ms means 6.6 to
 # 47 kPa), and 253 N/m and 37.5 kPa in a run with slightly different open-boundary walls.
