@@ -8,7 +8,7 @@
 #include "apps/bench_case.h"
 
 #include "apps/case_file.h"
-#include "apps/command_line.h"
+#include "common/command_line.h"
 #include "apps/simulation_factory.h"
 #include "common/input_error.h"
 
@@ -22,7 +22,7 @@ namespace chipflex::apps
 {
 int bench_case(const Arguments& args)
 {
-  CommandLine cl("chipflex bench case",
+  common::CommandLine cl("chipflex bench case",
                  "Wall time per step of a case file (built as `chipflex run` builds it).");
   cl.add_positional("CASE.prm", "case file");
   cl.add_option("--steps", "N", "steps timed", "2000");

@@ -2,7 +2,7 @@
 // trusted for this load? Static and step-load responses of the full FE model against the
 // reduced body (compare/compare_with_full.h). Runs under mpirun too; only rank 0 prints and writes.
 
-#include "apps/command_line.h"
+#include "common/command_line.h"
 #include "apps/commands.h"
 #include "apps/json_value.h"
 #include "common/atomic_output.h"
@@ -20,7 +20,7 @@ namespace chipflex::apps
 {
 int compare_command(const Arguments& args)
 {
-  CommandLine cl("chipflex compare MESH.msh BODY.h5 --load force:GROUP:fx,fy[,fz] [options]",
+  common::CommandLine cl("chipflex compare MESH.msh BODY.h5 --load force:GROUP:fx,fy[,fz] [options]",
                  "Compare a clamped reduced body with the full FE model: static response and a\n"
                  "step load (Newmark average acceleration) on both, at the centroid of the loaded\n"
                  "group's nodes. With --nonlinear the full model is geometrically nonlinear\n"

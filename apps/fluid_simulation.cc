@@ -191,7 +191,10 @@ std::string FluidSimulation<dim>::flow_summary() const
     std::ostringstream c;
     c.precision(3);
     c << " closest_fluid_pair_dp=" << fluid_->closest_fluid_pair() / p.particle_spacing
-      << " closest_fluid_pair_t_s=" << fluid_->closest_fluid_pair_time();
+      << " closest_fluid_pair_t_s=" << fluid_->closest_fluid_pair_time()
+      << " closest_fluid_pair_at_m=";
+    for (int d = 0; d < dim; ++d)
+      c << (d ? "," : "") << fluid_->closest_fluid_pair_position()[d];
     s += c.str();
   }
   return s;

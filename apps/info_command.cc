@@ -2,7 +2,7 @@
 // and for scripts, and its mesh with the mode shapes for ParaView.
 
 #include "apps/body_xdmf.h"
-#include "apps/command_line.h"
+#include "common/command_line.h"
 #include "apps/commands.h"
 #include "apps/json_value.h"
 #include "common/reduced_body_file.h"
@@ -98,7 +98,7 @@ void print_text(const std::string& path, const ReducedBodyData& b)
 
 int info_command(const Arguments& args)
 {
-  CommandLine cl("chipflex info BODY.h5 [--json] [--xdmf OUT.xdmf]",
+  common::CommandLine cl("chipflex info BODY.h5 [--json] [--xdmf OUT.xdmf]",
                  "Summarise a reduced body file.");
   cl.add_positional("BODY", "body file written by chipflex reduce");
   cl.add_flag("--json", "print one JSON object instead of text");

@@ -9,7 +9,7 @@
 //   plate 3D: x in [0, length], y in [0, width], z in [0, thickness]; clamp at x = 0, tip at
 //             x = length.
 
-#include "apps/command_line.h"
+#include "common/command_line.h"
 #include "apps/commands.h"
 #include "common/input_error.h"
 #include "meshes/block_mesher.h"
@@ -23,7 +23,7 @@ namespace
 {
 int mesh_chip(const Arguments& args)
 {
-  CommandLine cl("chipflex mesh chip --shape helical|spiral|arc|ribbon -o MESH.msh [options]",
+  common::CommandLine cl("chipflex mesh chip --shape helical|spiral|arc|ribbon -o MESH.msh [options]",
                  "Mesh a machining chip: a width x thickness section swept along the chip's\n"
                  "centre curve, structured hexahedra (27-node quadratic by default) with --layers\n"
                  "elements through the thickness. Physical groups body, skin, start, end (a ring,\n"
@@ -81,7 +81,7 @@ int mesh_command(const Arguments& args)
 {
   if (!args.empty() && args[0] == "chip")
     return mesh_chip(args);
-  CommandLine cl("chipflex mesh gate|plate|chip -o MESH.msh [options]",
+  common::CommandLine cl("chipflex mesh gate|plate|chip -o MESH.msh [options]",
                  "Generate a gmsh .msh 4.1 mesh with physical groups body, clamp, tip, skin and\n"
                  "the sides xmin, xmax, ymin, ymax (, zmin, zmax).\n"
                  "gate: 2D rectangle thickness (x) by length (y), clamped at the top end;\n"

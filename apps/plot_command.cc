@@ -5,7 +5,7 @@
 // Drawn by gnuplot (Debian's gnuplot-nox, pngcairo terminal, png as fallback); the
 // curves are first rewritten as plain whitespace tables in a temporary folder.
 
-#include "apps/command_line.h"
+#include "common/command_line.h"
 #include "apps/commands.h"
 #include "common/atomic_output.h"
 #include "common/input_error.h"
@@ -81,7 +81,7 @@ std::string find_data_folder(const std::string& given)
 
 int plot_command(const Arguments& args)
 {
-  CommandLine cl("chipflex plot RUN... --out PNG [options]",
+  common::CommandLine cl("chipflex plot RUN... --out PNG [options]",
                  "Plot the gate's free-end displacement (dx, dy) against time for each RUN "
                  "(a `chipflex run` output folder or a CSV time_s,dx_m,dy_m) with the "
                  "experiment and published curves of Antoci et al. 2007.");

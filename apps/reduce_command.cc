@@ -1,7 +1,7 @@
 // `chipflex reduce MESH.msh -o BODY.h5`: the reduced floating-frame body of a gmsh mesh
 // (fem/reduce.h). Runs under `mpirun -np N` too; only rank 0 prints and writes.
 
-#include "apps/command_line.h"
+#include "common/command_line.h"
 #include "apps/commands.h"
 #include "common/input_error.h"
 #include "common/reduced_body_file.h"
@@ -49,7 +49,7 @@ std::vector<std::string> petsc_arguments(const std::string& options)
 
 int reduce_command(const Arguments& args)
 {
-  CommandLine cl("chipflex reduce MESH.msh -o BODY.h5 [options]",
+  common::CommandLine cl("chipflex reduce MESH.msh -o BODY.h5 [options]",
                  "Reduce a gmsh mesh to a floating-frame body file (HDF5, format v2): consistent\n"
                  "mass and stiffness (deal.II), elastic normal modes (SLEPc Krylov-Schur,\n"
                  "shift-and-invert, MUMPS), optional static correction modes, a mass-orthonormal\n"

@@ -13,7 +13,7 @@
 
 #include "apps/case_file.h"
 #include "apps/channel_acoustics.h"
-#include "apps/command_line.h"
+#include "common/command_line.h"
 #include "apps/commands.h"
 #include "apps/fluid_continuity.h"
 #include "apps/probe_output.h"
@@ -108,7 +108,7 @@ double next_after(double time, double interval)
 
 int run_command(const Arguments& args)
 {
-  CommandLine cl("chipflex run CASE.prm --out DIR [options]",
+  common::CommandLine cl("chipflex run CASE.prm --out DIR [options]",
                  "Run an SPH case: particle frames (DIR/particles.xdmf), walls "
                  "(DIR/walls.xdmf), body skins (DIR/skins.xdmf), gauges (DIR/probes.csv), "
                  "DIR/summary.txt, checkpoints (DIR/checkpoint.h5); docs/output.md.");

@@ -11,7 +11,7 @@
 // what the frame motion sees; the FE-consistent nodal distribution (`compare`) differs
 // only in how the set's own deformation is excited.
 
-#include "apps/command_line.h"
+#include "common/command_line.h"
 #include "apps/commands.h"
 #include "common/atomic_output.h"
 #include "common/input_error.h"
@@ -72,7 +72,7 @@ double factor_at(const std::vector<std::pair<double, double>>& rows, double t)
 }
 
 template <int dim>
-void simulate(const ReducedBodyData& data, const CommandLine& cl)
+void simulate(const ReducedBodyData& data, const common::CommandLine& cl)
 {
   using Vector = Eigen::Matrix<double, dim, 1>;
   const double end_time = cl.get_double("--end-time"), dt = cl.get_double("--dt");
@@ -162,7 +162,7 @@ void simulate(const ReducedBodyData& data, const CommandLine& cl)
 
 int simulate_command(const Arguments& args)
 {
-  CommandLine cl("chipflex simulate BODY.h5 --end-time T -o CSV [options]",
+  common::CommandLine cl("chipflex simulate BODY.h5 --end-time T -o CSV [options]",
                  "Integrate a reduced body on its own (no fluid) under a load history:\n"
                  "frame position, momentum, modal amplitude and energies against time.");
   cl.add_positional("BODY", "body file from chipflex reduce");

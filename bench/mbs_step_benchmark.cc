@@ -5,7 +5,7 @@
 // synthetic: a 50 x 2 x 2 node strip with a lumped mass, smooth mass-orthonormalised
 // shape functions as modes and 10..200 Hz frequencies.
 
-#include "apps/command_line.h"
+#include "common/command_line.h"
 #include "bench/benchmarks.h"
 #include "common/polynomial_stiffness.h"
 #include "common/reduced_body_file.h"
@@ -226,7 +226,7 @@ double flexible_body_step(const ReducedBodyData& data, bool clamped, long steps,
 
 int mbs_step_benchmark(const Arguments& args)
 {
-  apps::CommandLine cl("chipflex bench mbs [options]",
+  common::CommandLine cl("chipflex bench mbs [options]",
                        "wall time per implicit step (generalised-alpha, 1e-5 s): a 3D "
                        "flexible body with 20 modes (clamped and free, linear and nonlinear "
                        "St Venant-Kirchhoff) and a 3-link chain; "

@@ -5,7 +5,7 @@
 // particles: 20,000 fluid + 1,002 boundary particles. Runs to t = 0.05 s and reports
 // particle-steps per second of the stepping loop (set-up excluded).
 
-#include "apps/command_line.h"
+#include "common/command_line.h"
 #include "bench/benchmarks.h"
 #include "sph/case_setup.h"
 
@@ -45,7 +45,7 @@ void time_fluid(sph::FluidSolver<dim>& fluid, double end_time, const std::string
 
 int sph_dambreak2d_benchmark(const Arguments& args)
 {
-  apps::CommandLine cl("chipflex bench sph-dambreak2d [options]",
+  common::CommandLine cl("chipflex bench sph-dambreak2d [options]",
                        "DualSPHysics CaseDambreakVal2D to t = 0.05 s; last line "
                        "particle_steps_per_s=<value> (DualSPHysics 5.4 CPU: 3.11e6 on 2 threads)");
   cl.add_option("--threads", "N", "OpenMP threads (default: OMP_NUM_THREADS or all cores)");
@@ -91,7 +91,7 @@ int sph_dambreak2d_benchmark(const Arguments& args)
 // kernel there; chipflex has Wendland's, which costs the same per pair.
 int sph_dambreak3d_benchmark(const Arguments& args)
 {
-  apps::CommandLine cl("chipflex bench sph-dambreak3d [options]",
+  common::CommandLine cl("chipflex bench sph-dambreak3d [options]",
                        "DualSPHysics CaseDambreak (3D) to t = 0.02 s; last line "
                        "particle_steps_per_s=<value>");
   cl.add_option("--threads", "N", "OpenMP threads (default: OMP_NUM_THREADS or all cores)");

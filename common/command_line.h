@@ -1,5 +1,5 @@
 #pragma once
-// A small, strict command-line parser for the subcommands: declared options with help
+// A small, strict command-line parser for the subcommands and the benchmarks: declared options with help
 // text and defaults, positional arguments, `--help`. An unknown option, a missing value
 // or a value of the wrong type throws InputError naming the option.
 
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace chipflex::apps
+namespace chipflex::common
 {
 class CommandLine
 {
@@ -51,4 +51,4 @@ private:
   std::map<std::string, std::string> aliases_;
   std::map<std::string, std::vector<std::string>> values_;
 };
-} // namespace chipflex::apps
+} // namespace chipflex::common

@@ -1,4 +1,4 @@
-#include "apps/command_line.h"
+#include "common/command_line.h"
 
 #include "common/input_error.h"
 
@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-namespace chipflex::apps
+namespace chipflex::common
 {
 CommandLine::CommandLine(std::string usage, std::string summary)
     : usage_(std::move(usage)), summary_(std::move(summary))
@@ -194,4 +194,4 @@ long CommandLine::get_int(const std::string& name) const
     throw InputError("option " + name, "'" + value + "' is not an integer");
   return x;
 }
-} // namespace chipflex::apps
+} // namespace chipflex::common
