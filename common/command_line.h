@@ -1,7 +1,7 @@
 #pragma once
-// A small, strict command-line parser for the subcommands and the benchmarks: declared options with help
-// text and defaults, positional arguments, `--help`. An unknown option, a missing value
-// or a value of the wrong type throws InputError naming the option.
+// A small, strict command-line parser for the subcommands and the benchmarks: declared options with
+// help text and defaults, positional arguments, `--help`. An unknown option, a missing value or a
+// value of the wrong type throws InputError naming the option.
 
 #include <map>
 #include <optional>

@@ -216,6 +216,8 @@ public:
   /// thin skin); particle shifting only (its sums measure it; infinity otherwise), m.
   double closest_fluid_pair() const { return closest_pair_; }
   double closest_fluid_pair_time() const { return closest_pair_time_; }
+  /// Where the closest pair was: one of its two particles (m).
+  const Vector& closest_fluid_pair_position() const { return closest_pair_position_; }
   /// Every particle (fluid and boundary) has the mass rho0 dp^dim (2D: per metre).
   double particle_mass() const { return mass_; }
   double speed_of_sound() const { return parameters_.speed_of_sound; }
@@ -274,6 +276,7 @@ private:
   double peak_speed_ = 0, peak_speed_time_ = 0;
   Vector peak_speed_position_ = Vector::Zero();
   double closest_pair_ = std::numeric_limits<double>::infinity(), closest_pair_time_ = 0;
+  Vector closest_pair_position_ = Vector::Zero();
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

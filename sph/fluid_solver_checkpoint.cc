@@ -76,6 +76,9 @@ void FluidSolver<dim>::save(Hdf5File& file, const std::string& group) const
   {
     file.write_attribute(group, "closest_fluid_pair", closest_pair_);
     file.write_attribute(group, "closest_fluid_pair_time", closest_pair_time_);
+    for (int d = 0; d < dim; ++d)
+      file.write_attribute(group, "closest_fluid_pair_position_" + std::to_string(d),
+                           closest_pair_position_[d]);
   }
   const std::size_t nl = lost_.size();
   file.write_attribute(group, "n_lost", std::int64_t(nl));
@@ -232,10 +235,15 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
   peak_speed_position_.setZero();
   closest_pair_ = std::numeric_limits<double>::infinity();
   closest_pair_time_ = 0;
+  closest_pair_position_.setZero();
   if (file.has_attribute(group, "closest_fluid_pair"))
   {
     closest_pair_ = file.read_double_attribute(group, "closest_fluid_pair");
     closest_pair_time_ = file.read_double_attribute(group, "closest_fluid_pair_time");
+    for (int d = 0; d < dim; ++d)
+      if (file.has_attribute(group, "closest_fluid_pair_position_" + std::to_string(d)))
+        closest_pair_position_[d] =
+            file.read_double_attribute(group, "closest_fluid_pair_position_" + std::to_string(d));
   }
   if (file.has_attribute(group, "n_lost"))
   {

@@ -20,6 +20,7 @@ void FluidSolver<dim>::shift_particles(double dt)
   const float a_h_dt = float(parameters_.shifting_coefficient * h_ * dt);
   const float cap = float(0.1 * parameters_.particle_spacing);
   float closest = 3.4e38f;
+  std::size_t closest_at = n;
   for (std::size_t i = nb; i < n; ++i)
   {
     const std::size_t k = i - nb;
@@ -35,8 +36,8 @@ void FluidSolver<dim>::shift_particles(double dt)
     bool near_plane = false;
     for (const auto& z : zones_)
       near_plane = near_plane || std::abs(p.position[z.axis][i] - z.plane()) < 2 * h_;
-    if (!near_plane)
-      closest = std::min(closest, im.closest[k]);
+    if (!near_plane && im.closest[k] < closest)
+      closest = im.closest[k], closest_at = i;
     float sum[dim];
     for (int d = 0; d < dim; ++d)
       sum[d] = im.shift_sum[d][k];
@@ -52,6 +53,8 @@ void FluidSolver<dim>::shift_particles(double dt)
   {
     closest_pair_ = std::sqrt(double(closest));
     closest_pair_time_ = time_ + dt;
+    for (int d = 0; d < dim; ++d)
+      closest_pair_position_[d] = p.position[d][closest_at];
   }
 }
 
