@@ -661,18 +661,70 @@ std::string documented_case_keys()
   return out.str();
 }
 
-CaseFile read_case_file(const std::string& path)
+namespace
+{
+/// The case file's text with every `include FILE` line (FILE relative to the case file's
+/// folder) given as an absolute path, for ParameterHandler, which reads the included file
+/// in its place (so its errors name that file and its line); and, in `expanded`, the text
+/// with each included file written out, for what must see the whole case before it is
+/// parsed (the body subsections). One level: an included file includes nothing.
+/// Where an `include ` statement starts in `line`, or npos.
+std::size_t include_at(const std::string& line)
+{
+  const std::size_t first = line.find_first_not_of(" \t");
+  return first != std::string::npos && line.compare(first, 8, "include ") == 0 ? first
+                                                                               : std::string::npos;
+}
+
+std::string resolve_includes(const std::string& path, std::string& expanded)
 {
   std::ifstream in(path);
   if (!in)
     throw InputError(path, "cannot open the case file");
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::string resolved, line;
+  expanded.clear();
+  for (int line_number = 1; std::getline(in, line); ++line_number)
+  {
+    const std::size_t first = include_at(line);
+    if (first == std::string::npos)
+    {
+      resolved += line + "\n";
+      expanded += line + "\n";
+      continue;
+    }
+    const std::string where = path + ": line " + std::to_string(line_number);
+    std::string name = line.substr(first + 8);
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t\r") + 1);
+    if (name.empty())
+      throw InputError(where, "include: no file name");
+    const std::filesystem::path file = std::filesystem::absolute(folder / name);
+    std::ifstream included(file);
+    if (!included)
+      throw InputError(where, "include " + name + ": cannot open " + file.string());
+    std::stringstream text;
+    text << included.rdbuf();
+    std::istringstream lines(text.str());
+    for (std::string l; std::getline(lines, l);)
+      if (include_at(l) != std::string::npos)
+        throw InputError(file.string(), "include inside an included file (one level only)");
+    resolved += "include " + file.string() + "\n";
+    expanded += text.str() + "\n";
+  }
+  return resolved;
+}
+} // namespace
+
+CaseFile read_case_file(const std::string& path)
+{
+  std::string expanded;
+  std::stringstream text(resolve_includes(path, expanded));
   CaseFile c;
   c.path = path;
   c.parameters = std::make_shared<ParameterHandler>();
   auto& prm = *c.parameters;
-  std::stringstream text;
-  text << in.rdbuf();
-  c.body_subsections = count_body_subsections(text.str());
+  c.body_subsections = count_body_subsections(expanded);
   declare_keys(prm, c.body_subsections);
   try
   {

@@ -53,8 +53,10 @@ for spec in $variants; do
   run=$(echo "$spec" | tr ':' '_')
   case_file=$repo/cases/elastic_gate/$v.prm
   [ -f "$case_file" ] || { echo "no variant $v ($case_file)" >&2; exit 2; }
-  sed -e "s|^\(  set particle spacing *=\).*|\1 $dp|" \
-      -e "s|^\(    set modes *=\).*|\1 ${MODES:--1}|" "$case_file" > "$run.prm"
+  # The variant with the shared tank written out (its include), so that sed reaches every key.
+  "$repo/scripts/flatten_case.sh" "$case_file" |
+    sed -e "s|^\(  set particle spacing *=\).*|\1 $dp|" \
+        -e "s|^\(    set modes *=\).*|\1 ${MODES:--1}|" > "$run.prm"
   mods=${spec#"$v"}
   for m in $(echo "$mods" | tr ':' ' '); do
     case $m in

@@ -13,10 +13,11 @@ trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 
 "$chipflex" mesh gate -o "$dir/gate.msh" > /dev/null || fail "mesh gate"
-sed -e "s|^\(  set particle spacing *=\).*|\1 0.004|" \
+"$repo/scripts/flatten_case.sh" "$repo/cases/elastic_gate/fe.prm" |
+  sed -e "s|^\(  set particle spacing *=\).*|\1 0.004|" \
     -e "s|^\(  set reference *=\).*|\1 $repo/data/antoci2007/experiment_merged.csv|" \
     -e "s|^\(  set frame interval *=\).*|\1 0.006|" \
-    "$repo/cases/elastic_gate/fe.prm" > "$dir/fe.prm"
+    > "$dir/fe.prm"
 
 "$chipflex" run "$dir/fe.prm" --out "$dir/full" --threads 2 --end-time 0.012 > "$dir/full.log" 2>&1 ||
   fail "uninterrupted run: $(tail -2 "$dir/full.log")"

@@ -18,9 +18,10 @@ cd "$dir" || fail "no temporary folder"
   --E 1.2e7 --nu 0.4 --rho 1100 \
   > /dev/null 2>&1 || fail "reduce"
 "$chipflex" export fmu gate.h5 -o gate.fmu > /dev/null || fail "export fmu"
-sed -e "s|^\(  set particle spacing *=\).*|\1 0.002|" -e "s|^\(  set end time *=\).*|\1 0.03|" \
+"$repo/scripts/flatten_case.sh" "$repo/cases/elastic_gate/flexible.prm" |
+  sed -e "s|^\(  set particle spacing *=\).*|\1 0.002|" -e "s|^\(  set end time *=\).*|\1 0.03|" \
     -e "s|^\(  set reference *=\).*|\1 $repo/data/antoci2007/experiment_merged.csv|" \
-    "$repo/cases/elastic_gate/flexible.prm" > flexible.prm
+    > flexible.prm
 sed -e "s|^\(    set kind *=\).*|\1 fmu|" -e "s|^    set body file *=.*|    set fmu file = gate.fmu|" \
     flexible.prm > fmu.prm
 grep -q "set kind *= fmu" fmu.prm && grep -q "set fmu file = gate.fmu" fmu.prm || fail "fmu.prm"
