@@ -1,5 +1,6 @@
 #include "apps/contact_case_keys.h"
 
+#include "apps/case_values.h"
 #include "common/input_error.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -66,20 +67,7 @@ try
   p.steps = prm.get_double("steps per contact");
   p.tangential_ratio = prm.get_double("tangential stiffness ratio");
   p.thickness = prm.get_double("thickness");
-  {
-    std::istringstream words(prm.get("torque axis"));
-    std::string word;
-    while (std::getline(words, word, ','))
-      if (word.find_first_not_of(" \t") != std::string::npos)
-        try
-        {
-          c.torque_axis.push_back(std::stod(word));
-        }
-        catch (const std::exception&)
-        {
-          throw InputError("contact/torque axis", "'" + word + "' is not a number");
-        }
-  }
+  c.torque_axis = numbers("contact/torque axis", prm.get("torque axis"));
   prm.leave_subsection();
   coupling::check(p, "contact");
   prm.enter_subsection("geometry");

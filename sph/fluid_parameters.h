@@ -46,6 +46,10 @@ inline bool is_symplectic(TimeScheme s)
 /// edge 0.38, the fluid 1.
 inline constexpr double spray_fill_threshold = 0.4;
 
+/// The coefficient A of particle shifting's D = A h |v| dt where a case switches it on
+/// (DualSPHysics' shifting coefficient -2).
+inline constexpr double default_shifting_coefficient = 2;
+
 template <int dim>
 struct FluidParameters
 {

@@ -1,5 +1,6 @@
 #include "apps/body_kinds/body_kind.h"
 
+#include "apps/case_values.h"
 #include "common/input_error.h"
 #include "mbs/floating_frame_body.h"
 
@@ -101,25 +102,7 @@ bool BodyKeys::flag(const std::string& key) const
 
 std::vector<double> BodyKeys::numbers(const std::string& key, int count) const
 {
-  std::vector<double> v;
-  std::stringstream s(prm_.get(key));
-  std::string cell;
-  while (std::getline(s, cell, ','))
-  {
-    if (cell.find_first_not_of(" \t") == std::string::npos)
-      continue;
-    std::size_t used = 0;
-    try
-    {
-      v.push_back(std::stod(cell, &used));
-    }
-    catch (const std::exception&)
-    {
-      used = 0;
-    }
-    if (cell.find_first_not_of(" \t", used) != std::string::npos)
-      throw InputError(at(key), "'" + prm_.get(key) + "' is not a list of numbers");
-  }
+  const std::vector<double> v = apps::numbers(at(key), prm_.get(key));
   if (count > 0 && int(v.size()) != count)
     throw InputError(at(key), "'" + prm_.get(key) + "': expected " + std::to_string(count) +
                                   " numbers, got " + std::to_string(v.size()));
