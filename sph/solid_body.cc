@@ -1,8 +1,12 @@
 #include "sph/solid_body.h"
 
+#include "sph/neighbour_grid.h"
+#include "sph/wendland_kernel.h"
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +17,54 @@ namespace
 /// A gate of a few hundred particles sub-steps ~10^5 times: below this size the cost of
 /// starting a parallel region every sub-step exceeds the work.
 constexpr std::size_t parallel_threshold = 4000;
+
+/// For each point, the indices of the other points closer than `reach`, ascending (the
+/// order an all-pairs search gives, so the sums over them do not depend on the search):
+/// start[i] ... start[i + 1] in `list`. A cell grid `reach` wide (sph/neighbour_grid.h)
+/// over the points' bounding box finds them in O(n).
+template <int dim>
+void neighbours_within(const std::vector<Eigen::Matrix<double, dim, 1>>& x, double reach,
+                       std::vector<int>& start, std::vector<int>& list)
+{
+  using Vector = Eigen::Matrix<double, dim, 1>;
+  const std::size_t n = x.size();
+  start.assign(n + 1, 0);
+  list.clear();
+  if (n == 0)
+    return;
+  Vector lo = x[0], hi = x[0];
+  for (const auto& p : x)
+  {
+    if (!p.allFinite())
+      throw std::runtime_error("SPH solid: a particle's position is not finite (it blew up)");
+    lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  }
+  NeighbourGrid<dim> grid;
+  grid.setup(lo - Vector::Constant(reach), hi + Vector::Constant(reach), reach);
+  std::vector<std::uint32_t> cells(n), order, cell_start;
+  for (std::size_t i = 0; i < n; ++i)
+    cells[i] = grid.cell_of(x[i].data());
+  grid.sort(cells, 0, n, order, cell_start);
+  const double reach2 = reach * reach;
+  std::vector<int> found;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    found.clear();
+    for (const std::int64_t offset : grid.row_offsets())
+    {
+      const std::int64_t first = std::int64_t(cells[i]) + offset;
+      for (std::uint32_t k = cell_start[first]; k < cell_start[first + 3]; ++k)
+      {
+        const std::size_t j = order[k];
+        if (j != i && (x[i] - x[j]).squaredNorm() < reach2)
+          found.push_back(int(j));
+      }
+    }
+    std::sort(found.begin(), found.end());
+    list.insert(list.end(), found.begin(), found.end());
+    start[i + 1] = int(list.size());
+  }
+}
 } // namespace
 
 void SolidMaterial::check() const
@@ -40,8 +92,7 @@ SolidBody<dim>::SolidBody(const SolidMaterial& material, double spacing, double 
   material.check();
   if (!(spacing > 0) || !(smoothing_length > 0))
     throw std::invalid_argument("SolidBody: spacing and smoothing length must be > 0");
-  // Wendland C2, support 2h (the same kernel as the fluid).
-  kernel_factor_ = dim == 2 ? 7.0 / (4 * M_PI * h_ * h_) : 21.0 / (16 * M_PI * h_ * h_ * h_);
+  // Wendland C2, support 2h: the fluid's kernel (sph/wendland_kernel.h).
   w_dp_ = kernel(spacing_);
   margin_ = 0.3 * spacing_;
 }
@@ -49,21 +100,13 @@ SolidBody<dim>::SolidBody(const SolidMaterial& material, double spacing, double 
 template <int dim>
 double SolidBody<dim>::kernel(double r) const
 {
-  const double q = r / h_;
-  if (q >= 2)
-    return 0;
-  const double a = 1 - 0.5 * q;
-  return kernel_factor_ * a * a * a * a * (2 * q + 1);
+  return WendlandKernel<dim>(h_).value(r);
 }
 
 template <int dim>
 double SolidBody<dim>::kernel_derivative(double r) const
 {
-  const double q = r / h_;
-  if (q >= 2)
-    return 0;
-  const double a = 1 - 0.5 * q;
-  return kernel_factor_ * (-5 * q) * a * a * a / h_;
+  return WendlandKernel<dim>(h_).gradient_over_r(r) * r;
 }
 
 template <int dim>
@@ -109,19 +152,8 @@ double SolidBody<dim>::stable_time_step() const
 template <int dim>
 void SolidBody<dim>::build_neighbour_list()
 {
-  // All pairs: a gate has a few hundred to a few thousand particles and the list is
-  // rebuilt only after a particle has moved by half the margin.
-  const std::size_t n = x_.size();
-  const double reach2 = std::pow(2 * h_ + margin_, 2);
-  neighbour_start_.assign(n + 1, 0);
-  neighbours_.clear();
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    for (std::size_t j = 0; j < n; ++j)
-      if (j != i && (x_[i] - x_[j]).squaredNorm() < reach2)
-        neighbours_.push_back(static_cast<int>(j));
-    neighbour_start_[i + 1] = static_cast<int>(neighbours_.size());
-  }
+  // Rebuilt only after a particle has moved by half the margin.
+  neighbours_within(x_, 2 * h_ + margin_, neighbour_start_, neighbours_);
   x_at_build_ = x_;
 }
 
@@ -282,23 +314,15 @@ void SolidBody<dim>::setup_reference()
 {
   // Neighbours within the support in the reference configuration, for good.
   const std::size_t n = x_ref_.size();
-  const double support = 2 * h_;
-  neighbour_start_.assign(n + 1, 0);
-  neighbours_.clear();
+  neighbours_within(x_ref_, 2 * h_, neighbour_start_, neighbours_);
   reference_gradient_.clear();
   for (std::size_t i = 0; i < n; ++i)
-  {
-    for (std::size_t j = 0; j < n; ++j)
+    for (int k = neighbour_start_[i]; k < neighbour_start_[i + 1]; ++k)
     {
-      const Vector r = x_ref_[i] - x_ref_[j];
+      const Vector r = x_ref_[i] - x_ref_[neighbours_[k]];
       const double d = r.norm();
-      if (j == i || d >= support)
-        continue;
-      neighbours_.push_back(static_cast<int>(j));
       reference_gradient_.push_back(kernel_derivative(d) / d * r); // grad_0,i W_ij
     }
-    neighbour_start_[i + 1] = static_cast<int>(neighbours_.size());
-  }
   correction_.assign(n, Tensor::Identity());
   n_uncorrected_ = 0;
   if (material_.kernel_gradient_correction)

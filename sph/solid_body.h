@@ -146,7 +146,7 @@ private:
   double kernel_derivative(double r) const; // dW/dr
 
   SolidMaterial material_;
-  double spacing_, h_, kernel_factor_, w_dp_;
+  double spacing_, h_, w_dp_;
   Vector gravity_ = Vector::Zero();
 
   std::vector<Vector> x_, v_, f_ext_, x_at_build_;

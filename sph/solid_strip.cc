@@ -7,6 +7,8 @@ namespace chipflex::sph
 {
 SolidSkin build_solid_strip(SolidBody<2>& solid, const SolidStripLayout& layout)
 {
+  if (!(layout.length > 0 && layout.thickness > 0))
+    throw std::invalid_argument("solid strip: the length and the thickness must be given (> 0)");
   const int rows = static_cast<int>(std::lround(layout.length / layout.spacing));
   const int layers = layout.layers;
   if (rows < 2 || layers < 2)

@@ -13,6 +13,7 @@
 #include "sph/solid_body.h"
 
 #include <array>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -22,10 +23,11 @@ struct SolidStripLayout
 {
   Eigen::Vector2d clamped_end_centre = Eigen::Vector2d::Zero(); ///< m
   Eigen::Vector2d direction = Eigen::Vector2d(0, -1);           ///< unit, clamped end -> free end
-  double length = 0.079;                                        ///< m
-  double thickness = 0.005;                                     ///< m
-  double spacing = 1e-3;                                        ///< m, along the length
-  int layers = 6;                                               ///< particles across the thickness
+  /// The strip's size, m: no defaults (NaN), every strip states its own.
+  double length = std::numeric_limits<double>::quiet_NaN();
+  double thickness = std::numeric_limits<double>::quiet_NaN();
+  double spacing = 1e-3; ///< m, along the length
+  int layers = 6;        ///< particles across the thickness
   int clamp_rows = 4;    ///< fixed rows beyond the clamped end
   int clamp_columns = 8; ///< fixed particles per clamp row (>= layers, centred)
 };

@@ -37,6 +37,8 @@ Vector tip(const SphSolidBody& body)
 TEST_CASE("SPH solid skin sits half a spacing outside the particles", "[coupling]")
 {
   chipflex::sph::SolidStripLayout layout; // the Antoci gate, Table 1
+  layout.length = 0.079;
+  layout.thickness = 0.005;
   layout.clamped_end_centre = Vector(0.1025, 0.079);
   SphSolidBody body(table1_rubber(), layout, 1.3, Vector::Zero());
   CHECK(body.solid().n_particles() == 79 * 6 + 8 * 4);
@@ -63,6 +65,8 @@ TEST_CASE("SPH solid skin sits half a spacing outside the particles", "[coupling
 TEST_CASE("SPH solid: skin forces change momentum by exactly their impulse", "[coupling]")
 {
   chipflex::sph::SolidStripLayout layout;
+  layout.length = 0.079;
+  layout.thickness = 0.005;
   layout.spacing = 2e-3;
   layout.layers = 3;
   layout.clamp_columns = 5;
@@ -92,6 +96,8 @@ TEST_CASE("SPH solid, total Lagrangian: an affine deformation gives the exact St
   // x = A X is A exactly, however incomplete the kernel; without it the surface particles'
   // is not (the test checks that too, so that it can tell the two apart).
   chipflex::sph::SolidStripLayout layout;
+  layout.length = 0.079;
+  layout.thickness = 0.005;
   layout.spacing = 2e-3;
   layout.layers = 3;
   layout.clamp_columns = 5;

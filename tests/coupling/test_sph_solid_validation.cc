@@ -63,7 +63,9 @@ struct HorizontalStrip
 
   static chipflex::sph::SolidStripLayout horizontal()
   {
-    chipflex::sph::SolidStripLayout l;
+    chipflex::sph::SolidStripLayout l; // the elastic gate's strip (Table 1)
+    l.length = 0.079;
+    l.thickness = 0.005;
     l.direction = Vector(1, 0);
     return l;
   }
