@@ -8,8 +8,8 @@
 #include "apps/bench_case.h"
 
 #include "apps/case_file.h"
-#include "common/command_line.h"
 #include "apps/simulation_factory.h"
+#include "common/command_line.h"
 #include "common/input_error.h"
 
 #include <algorithm>
@@ -23,7 +23,7 @@ namespace chipflex::apps
 int bench_case(const Arguments& args)
 {
   common::CommandLine cl("chipflex bench case",
-                 "Wall time per step of a case file (built as `chipflex run` builds it).");
+                         "Wall time per step of a case file (built as `chipflex run` builds it).");
   cl.add_positional("CASE.prm", "case file");
   cl.add_option("--steps", "N", "steps timed", "2000");
   cl.add_option("--warm-up", "N", "steps taken before timing", "200");

@@ -3,8 +3,8 @@
 // declared once with its unit and default, in the file of its section:
 // apps/fluid_case_keys (fluid, time, output), geometry_case_keys, open_boundary_case_keys,
 // probe_case_keys, body_case_keys, contact_case_keys (`chipflex run --print-keys` prints
-// them all); values are parsed with apps/case_values. An unknown key, a bad value or a missing file throws InputError
-// naming the file, the key and the value.
+// them all); values are parsed with apps/case_values. An unknown key, a bad value or a missing file
+// throws InputError naming the file, the key and the value.
 //
 // The case fills plain sph:: structs; the raw ParameterHandler stays available so that
 // coupling/ can read `subsection bodies` (declared in declare_body_keys()).

@@ -2,10 +2,10 @@
 // trusted for this load? Static and step-load responses of the full FE model against the
 // reduced body (compare/compare_with_full.h). Runs under mpirun too; only rank 0 prints and writes.
 
-#include "common/command_line.h"
 #include "apps/commands.h"
 #include "apps/json_value.h"
 #include "common/atomic_output.h"
+#include "common/command_line.h"
 #include "common/input_error.h"
 #include "compare/compare_with_full.h"
 #include "fem/blas_threads.h"
@@ -20,11 +20,12 @@ namespace chipflex::apps
 {
 int compare_command(const Arguments& args)
 {
-  common::CommandLine cl("chipflex compare MESH.msh BODY.h5 --load force:GROUP:fx,fy[,fz] [options]",
-                 "Compare a clamped reduced body with the full FE model: static response and a\n"
-                 "step load (Newmark average acceleration) on both, at the centroid of the loaded\n"
-                 "group's nodes. With --nonlinear the full model is geometrically nonlinear\n"
-                 "(a large load: Newton statics, Newton on every step).");
+  common::CommandLine cl(
+      "chipflex compare MESH.msh BODY.h5 --load force:GROUP:fx,fy[,fz] [options]",
+      "Compare a clamped reduced body with the full FE model: static response and a\n"
+      "step load (Newmark average acceleration) on both, at the centroid of the loaded\n"
+      "group's nodes. With --nonlinear the full model is geometrically nonlinear\n"
+      "(a large load: Newton statics, Newton on every step).");
   cl.add_positional("MESH", "the mesh the body was reduced from");
   cl.add_positional("BODY", "body file from chipflex reduce (clamped)");
   cl.add_option("--load", "LOAD", "force:GROUP:fx,fy[,fz] (total force, N; 2D: N/m)", "", true);

@@ -4,8 +4,8 @@
 //   sid  the Standard Input Data of Wallrapp (1994) as a text file (.SID_FEM), for
 //        multibody codes that read flexible bodies in that form (common/sid_writer.h)
 
-#include "common/command_line.h"
 #include "apps/commands.h"
+#include "common/command_line.h"
 #include "common/input_error.h"
 #include "common/reduced_body_file.h"
 #include "common/sid_writer.h"
@@ -31,12 +31,13 @@ std::string default_runtime()
 
 int export_fmu_command(const Arguments& args)
 {
-  common::CommandLine cl("chipflex export fmu BODY.h5 -o BODY.fmu [options]",
-                 "Pack a body file into an FMI 2.0 co-simulation FMU: chipflex's floating-frame\n"
-                 "body and generalised-alpha integrator as binaries/linux64/<id>.so, the body\n"
-                 "file as resources/body.h5. Inputs: forces on the frame, on node sets and on\n"
-                 "skin nodes; outputs: frame pose and velocities, modal coordinates, skin node\n"
-                 "positions and velocities (docs/export_fmu_sid.md).");
+  common::CommandLine cl(
+      "chipflex export fmu BODY.h5 -o BODY.fmu [options]",
+      "Pack a body file into an FMI 2.0 co-simulation FMU: chipflex's floating-frame\n"
+      "body and generalised-alpha integrator as binaries/linux64/<id>.so, the body\n"
+      "file as resources/body.h5. Inputs: forces on the frame, on node sets and on\n"
+      "skin nodes; outputs: frame pose and velocities, modal coordinates, skin node\n"
+      "positions and velocities (docs/export_fmu_sid.md).");
   cl.add_positional("BODY", "body file from chipflex reduce");
   cl.add_option("--output", "FMU", "the FMU to write");
   cl.add_alias("-o", "--output");
@@ -62,10 +63,11 @@ int export_fmu_command(const Arguments& args)
 }
 int export_sid_command(const Arguments& args)
 {
-  common::CommandLine cl("chipflex export sid BODY.h5 -o BODY.SID_FEM [options]",
-                 "Write the body's Standard Input Data (Wallrapp 1994) as text: refmod, the\n"
-                 "nodes' frame data (origin, phi), mdCM, J, Ct, Cr, Me, Gr, Ge, Oe, ksigma, Ke,\n"
-                 "De (docs/export_fmu_sid.md: which entries are filled, which are zero).");
+  common::CommandLine cl(
+      "chipflex export sid BODY.h5 -o BODY.SID_FEM [options]",
+      "Write the body's Standard Input Data (Wallrapp 1994) as text: refmod, the\n"
+      "nodes' frame data (origin, phi), mdCM, J, Ct, Cr, Me, Gr, Ge, Oe, ksigma, Ke,\n"
+      "De (docs/export_fmu_sid.md: which entries are filled, which are zero).");
   cl.add_positional("BODY", "body file from chipflex reduce");
   cl.add_option("--output", "SID", "the SID file to write");
   cl.add_alias("-o", "--output");

@@ -2,9 +2,9 @@
 // and for scripts, and its mesh with the mode shapes for ParaView.
 
 #include "apps/body_xdmf.h"
-#include "common/command_line.h"
 #include "apps/commands.h"
 #include "apps/json_value.h"
+#include "common/command_line.h"
 #include "common/reduced_body_file.h"
 
 #include <iomanip>
@@ -99,7 +99,7 @@ void print_text(const std::string& path, const ReducedBodyData& b)
 int info_command(const Arguments& args)
 {
   common::CommandLine cl("chipflex info BODY.h5 [--json] [--xdmf OUT.xdmf]",
-                 "Summarise a reduced body file.");
+                         "Summarise a reduced body file.");
   cl.add_positional("BODY", "body file written by chipflex reduce");
   cl.add_flag("--json", "print one JSON object instead of text");
   cl.add_option("--xdmf", "OUT.xdmf",

@@ -9,8 +9,8 @@
 //   plate 3D: x in [0, length], y in [0, width], z in [0, thickness]; clamp at x = 0, tip at
 //             x = length.
 
-#include "common/command_line.h"
 #include "apps/commands.h"
+#include "common/command_line.h"
 #include "common/input_error.h"
 #include "meshes/block_mesher.h"
 #include "meshes/chip_mesher.h"
@@ -23,11 +23,12 @@ namespace
 {
 int mesh_chip(const Arguments& args)
 {
-  common::CommandLine cl("chipflex mesh chip --shape helical|spiral|arc|ribbon -o MESH.msh [options]",
-                 "Mesh a machining chip: a width x thickness section swept along the chip's\n"
-                 "centre curve, structured hexahedra (27-node quadratic by default) with --layers\n"
-                 "elements through the thickness. Physical groups body, skin, start, end (a ring,\n"
-                 "--shape arc --arc-angle 360, has no ends). Coordinates: docs/chips.md.");
+  common::CommandLine cl(
+      "chipflex mesh chip --shape helical|spiral|arc|ribbon -o MESH.msh [options]",
+      "Mesh a machining chip: a width x thickness section swept along the chip's\n"
+      "centre curve, structured hexahedra (27-node quadratic by default) with --layers\n"
+      "elements through the thickness. Physical groups body, skin, start, end (a ring,\n"
+      "--shape arc --arc-angle 360, has no ends). Coordinates: docs/chips.md.");
   cl.add_positional("KIND", "chip");
   cl.add_option("--output", "FILE", "output mesh file (.msh)", "", true);
   cl.add_alias("-o", "--output");
@@ -81,12 +82,13 @@ int mesh_command(const Arguments& args)
 {
   if (!args.empty() && args[0] == "chip")
     return mesh_chip(args);
-  common::CommandLine cl("chipflex mesh gate|plate|chip -o MESH.msh [options]",
-                 "Generate a gmsh .msh 4.1 mesh with physical groups body, clamp, tip, skin and\n"
-                 "the sides xmin, xmax, ymin, ymax (, zmin, zmax).\n"
-                 "gate: 2D rectangle thickness (x) by length (y), clamped at the top end;\n"
-                 "      with --depth a 3D plate. plate: 3D strip along x, clamped at x = 0.\n"
-                 "chip: a machining chip (see `chipflex mesh chip --help`).");
+  common::CommandLine cl(
+      "chipflex mesh gate|plate|chip -o MESH.msh [options]",
+      "Generate a gmsh .msh 4.1 mesh with physical groups body, clamp, tip, skin and\n"
+      "the sides xmin, xmax, ymin, ymax (, zmin, zmax).\n"
+      "gate: 2D rectangle thickness (x) by length (y), clamped at the top end;\n"
+      "      with --depth a 3D plate. plate: 3D strip along x, clamped at x = 0.\n"
+      "chip: a machining chip (see `chipflex mesh chip --help`).");
   cl.add_positional("KIND", "gate, plate or chip");
   cl.add_option("--output", "FILE", "output mesh file (.msh)", "", true);
   cl.add_alias("-o", "--output");

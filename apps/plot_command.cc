@@ -5,9 +5,9 @@
 // Drawn by gnuplot (Debian's gnuplot-nox, pngcairo terminal, png as fallback); the
 // curves are first rewritten as plain whitespace tables in a temporary folder.
 
-#include "common/command_line.h"
 #include "apps/commands.h"
 #include "common/atomic_output.h"
+#include "common/command_line.h"
 #include "common/input_error.h"
 #include "coupling/displacement_history.h"
 
@@ -82,9 +82,9 @@ std::string find_data_folder(const std::string& given)
 int plot_command(const Arguments& args)
 {
   common::CommandLine cl("chipflex plot RUN... --out PNG [options]",
-                 "Plot the gate's free-end displacement (dx, dy) against time for each RUN "
-                 "(a `chipflex run` output folder or a CSV time_s,dx_m,dy_m) with the "
-                 "experiment and published curves of Antoci et al. 2007.");
+                         "Plot the gate's free-end displacement (dx, dy) against time for each RUN "
+                         "(a `chipflex run` output folder or a CSV time_s,dx_m,dy_m) with the "
+                         "experiment and published curves of Antoci et al. 2007.");
   cl.add_positional("RUN", "run folders or displacement CSV files (one or more)", true);
   cl.add_option("--out", "PNG", "output image", "elastic_gate.png");
   cl.add_option("--data", "DIR", "reference data folder (default: data/antoci2007)");

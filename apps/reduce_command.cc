@@ -1,8 +1,8 @@
 // `chipflex reduce MESH.msh -o BODY.h5`: the reduced floating-frame body of a gmsh mesh
 // (fem/reduce.h). Runs under `mpirun -np N` too; only rank 0 prints and writes.
 
-#include "common/command_line.h"
 #include "apps/commands.h"
+#include "common/command_line.h"
 #include "common/input_error.h"
 #include "common/reduced_body_file.h"
 #include "fem/blas_threads.h"
@@ -49,13 +49,14 @@ std::vector<std::string> petsc_arguments(const std::string& options)
 
 int reduce_command(const Arguments& args)
 {
-  common::CommandLine cl("chipflex reduce MESH.msh -o BODY.h5 [options]",
-                 "Reduce a gmsh mesh to a floating-frame body file (HDF5, format v2): consistent\n"
-                 "mass and stiffness (deal.II), elastic normal modes (SLEPc Krylov-Schur,\n"
-                 "shift-and-invert, MUMPS), optional static correction modes, a mass-orthonormal\n"
-                 "basis and the inertia invariants. Works under mpirun -np N.\n"
-                 "The material has no defaults: --E, --nu and --rho are required (the elastic\n"
-                 "gate's rubber, Antoci et al. 2007: --E 1.2e7 --nu 0.4 --rho 1100).");
+  common::CommandLine cl(
+      "chipflex reduce MESH.msh -o BODY.h5 [options]",
+      "Reduce a gmsh mesh to a floating-frame body file (HDF5, format v2): consistent\n"
+      "mass and stiffness (deal.II), elastic normal modes (SLEPc Krylov-Schur,\n"
+      "shift-and-invert, MUMPS), optional static correction modes, a mass-orthonormal\n"
+      "basis and the inertia invariants. Works under mpirun -np N.\n"
+      "The material has no defaults: --E, --nu and --rho are required (the elastic\n"
+      "gate's rubber, Antoci et al. 2007: --E 1.2e7 --nu 0.4 --rho 1100).");
   cl.add_positional("MESH", "gmsh mesh (.msh) with named physical groups");
   cl.add_option("--output", "FILE", "body file to write (.h5)", "", true);
   cl.add_alias("-o", "--output");

@@ -13,13 +13,13 @@
 
 #include "apps/case_file.h"
 #include "apps/channel_acoustics.h"
-#include "common/command_line.h"
 #include "apps/commands.h"
 #include "apps/fluid_continuity.h"
 #include "apps/probe_output.h"
 #include "apps/progress_meter.h"
 #include "apps/simulation_factory.h"
 #include "common/atomic_output.h"
+#include "common/command_line.h"
 #include "common/hdf5_file.h"
 #include "common/input_error.h"
 
@@ -109,9 +109,9 @@ double next_after(double time, double interval)
 int run_command(const Arguments& args)
 {
   common::CommandLine cl("chipflex run CASE.prm --out DIR [options]",
-                 "Run an SPH case: particle frames (DIR/particles.xdmf), walls "
-                 "(DIR/walls.xdmf), body skins (DIR/skins.xdmf), gauges (DIR/probes.csv), "
-                 "DIR/summary.txt, checkpoints (DIR/checkpoint.h5); docs/output.md.");
+                         "Run an SPH case: particle frames (DIR/particles.xdmf), walls "
+                         "(DIR/walls.xdmf), body skins (DIR/skins.xdmf), gauges (DIR/probes.csv), "
+                         "DIR/summary.txt, checkpoints (DIR/checkpoint.h5); docs/output.md.");
   cl.add_positional("CASE.prm", "case file (deal.II ParameterHandler format)", false);
   cl.add_option("--out", "DIR", "output folder (created)");
   cl.add_option("--threads", "N", "OpenMP threads (default: OMP_NUM_THREADS or all cores)");

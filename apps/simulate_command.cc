@@ -11,9 +11,9 @@
 // what the frame motion sees; the FE-consistent nodal distribution (`compare`) differs
 // only in how the set's own deformation is excited.
 
-#include "common/command_line.h"
 #include "apps/commands.h"
 #include "common/atomic_output.h"
+#include "common/command_line.h"
 #include "common/input_error.h"
 #include "common/reduced_body_file.h"
 #include "fem/load_case.h"
@@ -163,8 +163,8 @@ void simulate(const ReducedBodyData& data, const common::CommandLine& cl)
 int simulate_command(const Arguments& args)
 {
   common::CommandLine cl("chipflex simulate BODY.h5 --end-time T -o CSV [options]",
-                 "Integrate a reduced body on its own (no fluid) under a load history:\n"
-                 "frame position, momentum, modal amplitude and energies against time.");
+                         "Integrate a reduced body on its own (no fluid) under a load history:\n"
+                         "frame position, momentum, modal amplitude and energies against time.");
   cl.add_positional("BODY", "body file from chipflex reduce");
   cl.add_option("--end-time", "T", "simulated time, s");
   cl.add_option("--dt", "S", "time step, s", "1e-4");

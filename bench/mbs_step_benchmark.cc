@@ -5,8 +5,8 @@
 // synthetic: a 50 x 2 x 2 node strip with a lumped mass, smooth mass-orthonormalised
 // shape functions as modes and 10..200 Hz frequencies.
 
-#include "common/command_line.h"
 #include "bench/benchmarks.h"
+#include "common/command_line.h"
 #include "common/polynomial_stiffness.h"
 #include "common/reduced_body_file.h"
 #include "mbs/multibody_system.h"
@@ -227,10 +227,10 @@ double flexible_body_step(const ReducedBodyData& data, bool clamped, long steps,
 int mbs_step_benchmark(const Arguments& args)
 {
   common::CommandLine cl("chipflex bench mbs [options]",
-                       "wall time per implicit step (generalised-alpha, 1e-5 s): a 3D "
-                       "flexible body with 20 modes (clamped and free, linear and nonlinear "
-                       "St Venant-Kirchhoff) and a 3-link chain; "
-                       "target <= 20 us per step of the 20-mode body on one core");
+                         "wall time per implicit step (generalised-alpha, 1e-5 s): a 3D "
+                         "flexible body with 20 modes (clamped and free, linear and nonlinear "
+                         "St Venant-Kirchhoff) and a 3-link chain; "
+                         "target <= 20 us per step of the 20-mode body on one core");
   cl.add_option("--body", "FILE", "reduced body file (default: synthetic 3D strip)");
   cl.add_option("--modes", "N", "modes of the synthetic body", "20");
   cl.add_option("--steps", "N", "timed steps per case", "20000");

@@ -5,8 +5,8 @@
 // particles: 20,000 fluid + 1,002 boundary particles. Runs to t = 0.05 s and reports
 // particle-steps per second of the stepping loop (set-up excluded).
 
-#include "common/command_line.h"
 #include "bench/benchmarks.h"
+#include "common/command_line.h"
 #include "sph/case_setup.h"
 
 #include <chrono>
@@ -45,9 +45,10 @@ void time_fluid(sph::FluidSolver<dim>& fluid, double end_time, const std::string
 
 int sph_dambreak2d_benchmark(const Arguments& args)
 {
-  common::CommandLine cl("chipflex bench sph-dambreak2d [options]",
-                       "DualSPHysics CaseDambreakVal2D to t = 0.05 s; last line "
-                       "particle_steps_per_s=<value> (DualSPHysics 5.4 CPU: 3.11e6 on 2 threads)");
+  common::CommandLine cl(
+      "chipflex bench sph-dambreak2d [options]",
+      "DualSPHysics CaseDambreakVal2D to t = 0.05 s; last line "
+      "particle_steps_per_s=<value> (DualSPHysics 5.4 CPU: 3.11e6 on 2 threads)");
   cl.add_option("--threads", "N", "OpenMP threads (default: OMP_NUM_THREADS or all cores)");
   cl.add_option("--end-time", "T", "simulated time, s", "0.05");
   cl.add_option("--spacing", "DP", "particle spacing, m", "0.01");
@@ -92,8 +93,8 @@ int sph_dambreak2d_benchmark(const Arguments& args)
 int sph_dambreak3d_benchmark(const Arguments& args)
 {
   common::CommandLine cl("chipflex bench sph-dambreak3d [options]",
-                       "DualSPHysics CaseDambreak (3D) to t = 0.02 s; last line "
-                       "particle_steps_per_s=<value>");
+                         "DualSPHysics CaseDambreak (3D) to t = 0.02 s; last line "
+                         "particle_steps_per_s=<value>");
   cl.add_option("--threads", "N", "OpenMP threads (default: OMP_NUM_THREADS or all cores)");
   cl.add_option("--end-time", "T", "simulated time, s", "0.02");
   cl.add_option("--spacing", "DP", "particle spacing, m", "0.0085");
