@@ -121,9 +121,7 @@ std::string resolve_includes(const std::string& path, std::string& expanded)
       continue;
     }
     const std::string where = path + ": line " + std::to_string(line_number);
-    std::string name = line.substr(first + 8);
-    name.erase(0, name.find_first_not_of(" \t"));
-    name.erase(name.find_last_not_of(" \t\r") + 1);
+    const std::string name = trim(line.substr(first + 8));
     if (name.empty())
       throw InputError(where, "include: no file name");
     const std::filesystem::path file = std::filesystem::absolute(folder / name);

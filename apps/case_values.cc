@@ -9,10 +9,10 @@ namespace chipflex::apps
 {
 std::string trim(const std::string& s)
 {
-  const auto a = s.find_first_not_of(" \t\n");
+  const auto a = s.find_first_not_of(" \t\r\n");
   if (a == std::string::npos)
     return "";
-  return s.substr(a, s.find_last_not_of(" \t\n") - a + 1);
+  return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
 }
 
 std::vector<std::string> split(const std::string& s, char separator)

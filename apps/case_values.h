@@ -12,7 +12,7 @@
 
 namespace chipflex::apps
 {
-/// `s` without leading and trailing blanks.
+/// `s` without leading and trailing blanks (spaces, tabs, line ends).
 std::string trim(const std::string& s);
 
 /// The non-blank items of `s` between `separator`s, trimmed.
