@@ -184,6 +184,7 @@ BodyCase<dim> read_body_case(ParameterHandler& prm, const std::string& case_path
     context.where = where;
     context.case_path = case_path;
     context.gravity = fluid.fluid.gravity;
+    context.rotating_frame = fluid.fluid.rotating_frame;
     if (!keys.flag("weight"))
       context.gravity.setZero();
     context.particle_spacing = fluid.fluid.particle_spacing;

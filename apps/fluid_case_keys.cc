@@ -91,6 +91,19 @@ void declare_fluid_keys(ParameterHandler& prm)
                     "Start each fluid block with its hydrostatic density (no initial wave).");
   prm.leave_subsection();
 
+  prm.enter_subsection("rotating frame");
+  prm.declare_entry("angular velocity", "0, 0, 0", Anything(),
+                    "The case's frame turns at this angular velocity (rad/s, three components, "
+                    "world axes; 2D: 0, 0, omega_z), e.g. the drill's frame: its walls stand "
+                    "still, and every fluid particle and rigid or flexible body feels the "
+                    "centrifugal, Coriolis and Euler accelerations. 0, 0, 0: an inertial frame.");
+  prm.declare_entry("axis point", "0, 0, 0", Anything(),
+                    "A point on the axis of rotation, m (dim components).");
+  prm.declare_entry("spin-up time", "0", Double(0),
+                    "The frame's speed rises from 0 to the angular velocity over this time, "
+                    "smoothly ((1 - cos(pi t / T)) / 2), s. 0: it turns from the start.");
+  prm.leave_subsection();
+
   prm.enter_subsection("time");
   prm.declare_entry("end time", default_text(description.end_time), Double(0),
                     "Simulated time, s.");
@@ -168,6 +181,20 @@ std::string read_fluid_keys(ParameterHandler& prm, sph::CaseDescription<dim>& c)
   const std::string shifting = prm.get("particle shifting");
   f.shifting_coefficient = shifting == "off" ? 0 : prm.get_double("shifting coefficient");
   c.hydrostatic_start = prm.get_bool("hydrostatic start");
+  prm.leave_subsection();
+
+  prm.enter_subsection("rotating frame");
+  {
+    RotatingFrame& frame = f.rotating_frame;
+    frame.angular_velocity =
+        vector_of<3>("rotating frame/angular velocity", prm.get("angular velocity"));
+    if (dim == 2 && frame.angular_velocity.head<2>().norm() > 0)
+      throw InputError("rotating frame/angular velocity",
+                       "a 2D case turns about z, the out-of-plane axis: give 0, 0, omega_z");
+    frame.axis_point.setZero();
+    frame.axis_point.head<dim>() = vector_of<dim>("rotating frame/axis point", prm.get("axis point"));
+    frame.spin_up_time = prm.get_double("spin-up time");
+  }
   prm.leave_subsection();
 
   prm.enter_subsection("time");

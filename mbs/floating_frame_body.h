@@ -29,6 +29,7 @@
 
 #include "common/polynomial_stiffness.h"
 #include "common/reduced_body_file.h"
+#include "common/rotating_frame.h"
 #include "mbs/rotation.h"
 #include "mbs/skin_body.h"
 
@@ -142,6 +143,11 @@ public:
   /// The applied (not inertial) resultant force and moment about the world origin, both
   /// in world axes (2D: moment about z): what changes the momenta. Free bodies only.
   void applied_frame_load(const Vector& gravity, Vector& force, Omega& moment) const;
+  /// Adds the generalised forces of the fictitious accelerations of a turning reference
+  /// frame (centrifugal, Coriolis, Euler) at time t to f: the virtual work of
+  /// -sum_j Ms_ij (Omega x (Omega x r_j) + 2 Omega x x_j' + dOmega/dt x r_j) over the
+  /// nodes, written exactly with the inertia invariants (rotating_frame_loads.cc).
+  void add_frame_inertia(const RotatingFrame& frame, double t, Eigen::Ref<Eigen::VectorXd> f) const;
   /// Adds c_k K_t + c_d D_t, the tangent of -forces() used in the Newton matrix (exact
   /// for a ground-clamped body; the elastic part only for a floating one).
   void add_tangent(double c_k, double c_d, Eigen::Ref<Eigen::MatrixXd> s) const;

@@ -26,6 +26,18 @@ void MultibodySystem<dim>::set_options(const IntegratorOptions& options)
 }
 
 template <int dim>
+void MultibodySystem<dim>::set_rotating_frame(const RotatingFrame& frame)
+{
+  if (dim == 2 && frame.active() && frame.angular_velocity.head<2>().norm() > 0)
+    throw InputError("rotating frame, angular velocity", "a 2D frame turns about z only");
+  if (frame.active() && options_.scheme == IntegratorOptions::Scheme::momentum_midpoint)
+    throw InputError("integrator scheme momentum_midpoint",
+                     "conserves the momenta of an inertial frame: not in a turning frame");
+  frame_ = frame;
+  nv_ = -1; // setup() again: the forces now depend on the state
+}
+
+template <int dim>
 int MultibodySystem<dim>::add_body(std::unique_ptr<FloatingFrameBody<dim>> body)
 {
   bodies_.push_back(std::move(body));
@@ -91,7 +103,7 @@ void MultibodySystem<dim>::setup()
   }
   nv_ = nv;
   nc_ = nc;
-  linear_ = nc == 0;
+  linear_ = nc == 0 && !frame_.active();
   for (const auto& b : bodies_)
     linear_ = linear_ && b->linear();
   m_.setZero(nv, nv);
@@ -123,7 +135,12 @@ template <int dim>
 void MultibodySystem<dim>::assemble_forces()
 {
   for (int i = 0; i < n_bodies(); ++i)
-    bodies_[i]->forces(gravity_, f_.segment(offsets_[i], bodies_[i]->n_velocities()));
+  {
+    const auto f = f_.segment(offsets_[i], bodies_[i]->n_velocities());
+    bodies_[i]->forces(gravity_, f);
+    if (frame_.active())
+      bodies_[i]->add_frame_inertia(frame_, force_time_, f);
+  }
   for (const auto& e : elements_)
     e->add_forces(view(e->body_a()), view(e->body_b()), f_);
 }
@@ -180,6 +197,7 @@ void MultibodySystem<dim>::initialize_accelerations()
   for (auto& b : bodies_)
     b->store_base();
   assemble_mass_matrix();
+  force_time_ = time_;
   assemble_forces();
   if (nc_ > 0)
     assemble_constraints();
@@ -250,6 +268,7 @@ void MultibodySystem<dim>::step_generalized_alpha(double h)
     scatter(incr_, v1_);
   };
   constexpr int stale_limit = 4; // iterations a kept matrix may need before it is renewed
+  force_time_ = time_ + h;        // the iterate is the state at the end of the step
   int it = 0;
   double last_correction = 0;
   for (;; ++it)
@@ -320,6 +339,7 @@ void MultibodySystem<dim>::step_symplectic_euler(double h)
     vn_.segment(offsets_[i], bodies_[i]->n_velocities()) = bodies_[i]->velocities();
   }
   assemble_mass_matrix();
+  force_time_ = time_;
   assemble_forces();
   if (nc_ > 0)
     assemble_constraints();
@@ -396,6 +416,9 @@ void MultibodySystem<dim>::step_momentum_midpoint(double h)
   if (nc_ > 0 || !elements_.empty())
     throw InputError("integrator scheme momentum_midpoint",
                      "only for bodies without joints or force elements");
+  if (frame_.active())
+    throw InputError("integrator scheme momentum_midpoint",
+                     "conserves the momenta of an inertial frame: not in a turning frame");
   mom0_.setZero(nv_);
   mom1_.setZero(nv_);
   res_.resize(nv_);

@@ -69,6 +69,9 @@ public:
   int add_joint(std::unique_ptr<Joint<dim>> joint);
   int add_force_element(std::unique_ptr<ForceElement<dim>> element);
   void set_gravity(const Vector& g) { gravity_ = g; }
+  /// The bodies move in a turning reference frame (positions and velocities relative to
+  /// it): each feels its fictitious forces. Not with the momentum midpoint scheme.
+  void set_rotating_frame(const RotatingFrame& frame);
   void set_options(const IntegratorOptions& options);
   const IntegratorOptions& options() const { return options_; }
 
@@ -116,6 +119,8 @@ private:
   std::vector<std::unique_ptr<ForceElement<dim>>> elements_;
   Vector gravity_ = Vector::Zero();
   double time_ = 0;
+  RotatingFrame frame_;
+  double force_time_ = 0; ///< the time assemble_forces() evaluates time-dependent loads at
 
   // layout
   std::vector<int> offsets_, joint_rows_;

@@ -3,6 +3,8 @@
 // struct: apps/case_file.cc fills it from the case file (where each key is documented
 // with its unit and default), tests and benchmarks fill it directly.
 
+#include "common/rotating_frame.h"
+
 #include <Eigen/Core>
 #include <limits>
 
@@ -63,6 +65,9 @@ struct FluidParameters
   double speed_of_sound = 0;       ///< c0, m/s (0: derived by the case builder)
   double gamma = 7;                ///< Tait exponent
   Vector gravity = Vector::Zero(); ///< m/s^2
+  /// The frame the case is written in may turn (the drill's frame): every fluid particle
+  /// then feels its centrifugal, Coriolis and Euler accelerations. Inactive by default.
+  RotatingFrame rotating_frame;
   ViscosityModel viscosity = ViscosityModel::artificial;
   double artificial_viscosity = 0.02; ///< alpha (-)
   double kinematic_viscosity = 1e-6;  ///< nu, m^2/s (laminar model)

@@ -436,7 +436,10 @@ double FluidSolver<dim>::step()
   // position_verlet reuses the previous step's mid-step pass for the predictor (and dt);
   // only the first step (no pass yet) evaluates the forces at t_n.
   if (parameters_.scheme != TimeScheme::position_verlet || !forces_current_)
+  {
+    force_time_ = time_;
     force_pass();
+  }
   forces_current_ = true;
   const double dt = compute_time_step();
   check_time_step(dt);
@@ -447,6 +450,7 @@ double FluidSolver<dim>::step()
   else
   {
     predict_symplectic(dt);
+    force_time_ = time_ + 0.5 * dt; // the mid-step state
     force_pass();
     correct_symplectic(dt);
   }

@@ -263,6 +263,7 @@ private:
   std::vector<std::pair<HookPoint, Hook>> hooks_;
 
   double time_ = 0, dt_ = 0;
+  double force_time_ = 0; ///< the time of the state force_pass() evaluates (the frame's speed)
   std::int64_t step_ = 0;
   int verlet_counter_ = 0;
   bool forces_current_ = false; ///< accelerations and rates of the last pass are valid

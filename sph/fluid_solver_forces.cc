@@ -248,6 +248,26 @@ void FluidSolver<dim>::force_pass()
   }
   im.lennard_jones.apply(p, nb, n, mass_, vertex_forces_);
 
+  // A turning frame: -Omega x (Omega x r) - 2 Omega x v - dOmega/dt x r on the fluid (the
+  // walls stand still in it). A separate pass, so that the common case keeps its loop.
+  if (parameters_.rotating_frame.active())
+  {
+    const RotatingFrame::Instant frame = parameters_.rotating_frame.at(force_time_);
+#pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
+    for (std::size_t i = nb; i < n; ++i)
+    {
+      Vector x, v;
+      for (int d = 0; d < dim; ++d)
+      {
+        x[d] = p.position[d][i];
+        v[d] = p.velocity[d][i];
+      }
+      const Vector a = frame.acceleration<dim>(x, v);
+      for (int d = 0; d < dim; ++d)
+        p.acceleration[d][i] += float(a[d]);
+    }
+  }
+
   // Gravity, the largest acceleration for the time step, the fastest particle.
   float g[dim];
   for (int d = 0; d < dim; ++d)

@@ -181,6 +181,7 @@ std::unique_ptr<mbs::MultibodySystem<dim>> make_body_system(const BodyContext<di
 {
   auto system = std::make_unique<mbs::MultibodySystem<dim>>(context.integrator);
   system->set_gravity(context.gravity);
+  system->set_rotating_frame(context.rotating_frame);
   return system;
 }
 
@@ -201,6 +202,16 @@ void place_body(mbs::FloatingFrameBody<dim>& body, const BodyPlacement<dim>& p)
 void only_in_2d(const std::string& kind, const std::string& where)
 {
   throw InputError(where + ", kind", "the " + kind + " kind exists in 2D cases only");
+}
+
+void refuse_rotating_frame(const std::string& kind, const std::string& where,
+                           const RotatingFrame& frame)
+{
+  if (frame.active())
+    throw InputError(where + ", kind",
+                     "a body of kind " + kind +
+                         " does not feel the turning frame's fictitious forces (rotating "
+                         "frame/angular velocity); use kind rigid or flexible");
 }
 
 template std::unique_ptr<mbs::MultibodySystem<2>> make_body_system(const BodyContext<2>&);

@@ -50,6 +50,7 @@ struct BodyContext
   std::string case_path;
   BodyPlacement<dim> placement;
   Eigen::Matrix<double, dim, 1> gravity = Eigen::Matrix<double, dim, 1>::Zero();
+  RotatingFrame rotating_frame; ///< the case's frame (the fluid's): fictitious forces
   double particle_spacing = 0; ///< the fluid's dp, m (default skin spacing)
   mbs::IntegratorOptions integrator;
   double max_step = 0; ///< body sub-step limit, s (0: one per fluid step)
@@ -153,4 +154,8 @@ template <int dim>
 void place_body(mbs::FloatingFrameBody<dim>& body, const BodyPlacement<dim>& placement);
 /// InputError at `where` for kinds that exist in one dimension only.
 [[noreturn]] void only_in_2d(const std::string& kind, const std::string& where);
+/// InputError at `where` for kinds that do not take the fictitious forces of a turning
+/// frame (`subsection rotating frame`) yet, when the case's frame turns.
+void refuse_rotating_frame(const std::string& kind, const std::string& where,
+                           const RotatingFrame& frame);
 } // namespace chipflex::apps

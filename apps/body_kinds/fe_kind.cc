@@ -82,6 +82,7 @@ public:
     s.rayleigh_stiffness = keys.number("rayleigh stiffness");
     if (context.placement.velocity.norm() > 0 || context.placement.angular_velocity.norm() > 0)
       throw InputError(keys.where() + ", velocity", "an fe body starts at rest");
+    refuse_rotating_frame("fe", keys.where(), context.rotating_frame);
     const double fe_step = keys.number("fe time step");
     if (fe_step > 0 && context.max_step > 0)
       throw InputError(keys.at("fe time step"), "give either fe time step or max step, not both");

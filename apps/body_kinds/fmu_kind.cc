@@ -36,6 +36,7 @@ public:
     const auto& p = context.placement;
     coupling::FmuBodySettings s;
     s.name = context.name;
+    refuse_rotating_frame(name(), keys.where(), context.rotating_frame);
     s.fmu_file = keys.file("fmu file");
     s.clamped = p.clamped;
     s.position = p.position;

@@ -62,6 +62,7 @@ public:
     material.formulation = keys.text("formulation") == "updated lagrangian"
                                ? sph::SolidFormulation::updated_lagrangian
                                : sph::SolidFormulation::total_lagrangian;
+    refuse_rotating_frame(name(), keys.where(), context.rotating_frame);
     sph::SolidStripLayout layout;
     layout.clamped_end_centre = context.placement.position;
     layout.direction = keys.vector<2>("direction");

@@ -167,3 +167,80 @@ TEST_CASE("FFRF mass matrix, quadratic velocity vector and loads equal the nodal
 {
   check_equations_of_motion<3>(4, 10);
 }
+
+namespace
+{
+/// The fictitious forces of a turning frame (spinning up: centrifugal, Coriolis and Euler
+/// at once) against the virtual work of the nodal fictitious forces sum_j Ms_ij b_j.
+template <int dim>
+void check_frame_inertia(int n_cells, int n_modes)
+{
+  using V = Eigen::Matrix<double, dim, 1>;
+  TrussBeamSpec spec;
+  spec.dim = dim;
+  spec.n_cells = n_cells;
+  spec.n_modes = n_modes;
+  spec.clamped = false;
+  const auto beam = make_truss_beam(spec);
+  FloatingFrameBody<dim> body(beam.body);
+  const int m = body.n_modes();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Eigen::Matrix<double, dim, dim> rot;
+  if constexpr (dim == 2)
+    rot = rotation_matrix(-0.4);
+  else
+    rot = Eigen::AngleAxisd(1.3, Eigen::Vector3d(-1, 2, 0.5).normalized()).toRotationMatrix();
+  body.set_pose(V::Constant(0.2), rot);
+  Eigen::Matrix<double, rotation_dofs<dim>, 1> w;
+  for (int c = 0; c < w.size(); ++c)
+    w(c) = 3 * u(rng);
+  body.set_frame_velocity(V::Constant(-0.3), w);
+  Eigen::VectorXd q(m), qd(m);
+  for (int k = 0; k < m; ++k)
+  {
+    q(k) = 5e-4 * u(rng);
+    qd(k) = 0.05 * u(rng);
+  }
+  body.set_modal_state(q, qd);
+
+  RotatingFrame frame;
+  frame.angular_velocity = dim == 2 ? Eigen::Vector3d(0, 0, 7) : Eigen::Vector3d(2, -4, 5);
+  frame.axis_point = Eigen::Vector3d(0.05, -0.1, 0.02);
+  frame.spin_up_time = 1;
+  const double t = 0.4; // spinning up: dOmega/dt != 0
+  std::vector<V> b(body.n_nodes()), f(body.n_nodes(), V::Zero());
+  for (int j = 0; j < body.n_nodes(); ++j)
+    b[j] = frame.acceleration<dim>(t, body.node_position(j), body.node_velocity(j));
+  for (int i = 0; i < body.n_nodes(); ++i)
+    for (int j = 0; j < body.n_nodes(); ++j)
+      f[i] += beam.scalar_mass(i, j) * b[j];
+
+  // The fictitious part alone on both sides: the nodal sums with and without the nodal
+  // fictitious forces, against add_frame_inertia().
+  Eigen::MatrixXd m_ref;
+  Eigen::VectorXd f_ref, f_ref0;
+  const Eigen::MatrixXd psi = beam.body.psi.leftCols(m);
+  nodal_reference<dim>(body, beam.scalar_mass, psi, beam.body.nodes, f, V::Zero(), m_ref, f_ref);
+  nodal_reference<dim>(body, beam.scalar_mass, psi, beam.body.nodes,
+                       std::vector<V>(body.n_nodes(), V::Zero()), V::Zero(), m_ref, f_ref0);
+  f_ref -= f_ref0;
+  Eigen::VectorXd fb = Eigen::VectorXd::Zero(body.n_velocities());
+  body.add_frame_inertia(frame, t, fb);
+  // Round-off only: a wrong or missing term is off by O(1) of its row.
+  for (int r = 0; r < fb.size(); ++r)
+    CHECK(std::abs(fb(r) - f_ref(r)) <= 1e-10 * f_ref.cwiseAbs().maxCoeff());
+}
+} // namespace
+
+TEST_CASE("FFRF fictitious forces of a turning frame equal the nodal sums (2D)",
+          "[mbs][ffrf][rotating_frame]")
+{
+  check_frame_inertia<2>(6, 8);
+}
+
+TEST_CASE("FFRF fictitious forces of a turning frame equal the nodal sums (3D)",
+          "[mbs][ffrf][rotating_frame]")
+{
+  check_frame_inertia<3>(4, 10);
+}
