@@ -62,7 +62,8 @@ void declare_open_boundary_keys(ParameterHandler& prm)
                         "Mean normal speed over the section, m/s (give this or flow rate).");
       prm.declare_entry("flow rate", "0", Double(0),
                         "Volume flow rate, m^3/s (2D: m^2/s per metre depth); the mean speed "
-                        "is flow rate / section area.");
+                        "is flow rate / the section the buffer's fluid fills (uniform profile; "
+                        "parabolic: the box's section).");
       prm.declare_entry("profile", "uniform", Selection("uniform|parabolic"),
                         "uniform, or parabolic across the section: 2D 1.5 U (1 - eta^2) (plane "
                         "Poiseuille), 3D 2.25 U (1 - eta1^2)(1 - eta2^2), eta in [-1, 1].");
@@ -121,7 +122,8 @@ void read_open_boundary_keys(ParameterHandler& prm, sph::CaseDescription<dim>& c
         const double u = prm.get_double("velocity"), q = prm.get_double("flow rate");
         if ((u > 0) == (q > 0))
           throw InputError(where, "give exactly one of velocity and flow rate (positive)");
-        z.velocity = u > 0 ? u : q / z.section_area();
+        z.velocity = u > 0 ? u : q / z.section_area(); // the fluid's section: case_setup.cc
+        z.flow_rate = u > 0 ? 0 : q;
         z.profile = prm.get("profile") == "parabolic" ? sph::InletProfile::parabolic
                                                       : sph::InletProfile::uniform;
         z.ramp_time = prm.get_double("ramp time");

@@ -213,7 +213,8 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
                  });
   }
   // The buffers, on the same lattice: the fluid's rows continue through the planes.
-  for (const auto& z : c.open_boundaries)
+  std::vector<OpenBoundary<dim>> zones = c.open_boundaries;
+  for (auto& z : zones)
   {
     const Vector origin = c.tank.enabled ? c.tank.min : z.box_min;
     const double offset = (z.plane() - origin[z.axis]) / dp;
@@ -221,6 +222,16 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
       throw InputError("open boundaries/" + z.name,
                        "the plane must lie a whole number of particle spacings from the "
                        "lattice origin (the tank's min corner)");
+    if (z.kind == OpenBoundaryKind::inlet && z.flow_rate > 0 &&
+        z.profile == InletProfile::uniform)
+    {
+      std::size_t filled = 0;
+      lattice<dim>(z.box_min, z.box_max, origin, dp,
+                   [&](const Vector& x) { filled += !c.fluid_region || c.fluid_region(x); });
+      if (filled == 0)
+        throw InputError("open boundaries/" + z.name, "no fluid fills the buffer's box");
+      z.velocity = z.flow_rate * z.thickness() / (double(filled) * std::pow(dp, dim));
+    }
     lattice<dim>(z.box_min, z.box_max, origin, dp,
                  [&](const Vector& x)
                  {
@@ -303,7 +314,7 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
     solver->add_wall(walls[w], tank ? tank_dummies : std::vector<Vector>{},
                      tank ? tank_rho : std::vector<double>{});
   }
-  for (const auto& z : c.open_boundaries)
+  for (const auto& z : zones)
     solver->add_open_boundary(z);
   solver->add_fluid_particles(fluid_x, fluid_rho, fluid_v);
   return solver;

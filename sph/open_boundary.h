@@ -57,6 +57,12 @@ struct OpenBoundary
   int sign = 1; ///< +1: the flow runs along +axis, -1: along -axis
   /// Inlet: mean normal speed over the section, m/s (> 0: into the fluid).
   double velocity = 0;
+  /// Inlet: a volume flow rate instead, m^3/s (2D: m^2/s per metre of depth); > 0 sets
+  /// `velocity` when the fluid is built (sph/case_setup.cc): flow rate over the section
+  /// the buffer's fluid fills (its lattice points times dp^dim over the buffer's depth),
+  /// so a buffer box larger than a shaped section (geometry/fluid region) still gets the
+  /// rate. A parabolic profile takes the box's section.
+  double flow_rate = 0;
   InletProfile profile = InletProfile::uniform;
   /// Inlet: the speed rises as (1 - cos(pi t / T)) / 2 over [0, T], s (0: at once).
   double ramp_time = 0;
