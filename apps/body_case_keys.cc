@@ -131,6 +131,7 @@ void declare_body_keys(ParameterHandler& prm, int n_bodies)
     declare_kinds(prm);
     prm.leave_subsection();
   }
+  declare_chip_source_keys(prm);
   prm.leave_subsection();
 }
 
@@ -258,6 +259,8 @@ BodyCase<dim> read_body_case(ParameterHandler& prm, const std::string& case_path
     c.bodies.push_back(std::move(body));
     prm.leave_subsection();
   }
+  c.chip_source = read_chip_source_keys<dim>(prm, case_path + ": bodies, chip source",
+                                             fluid.fluid.rotating_frame);
   prm.leave_subsection();
   return c;
 }

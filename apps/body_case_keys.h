@@ -5,6 +5,7 @@
 // declares and reads its own. A key set for a body whose kind does not use it is an
 // error, as is any bad value: InputError naming the case file, the body and the key.
 
+#include "apps/chip_source_case_keys.h"
 #include "coupling/coupled_body.h"
 #include "sph/case_setup.h"
 #include "sph/wall_surface.h"
@@ -52,6 +53,7 @@ template <int dim>
 struct BodyCase
 {
   std::vector<CaseBody<dim>> bodies;
+  ChipSourceCase<dim> chip_source; ///< `bodies/chip source`; no bodies named: none
 };
 
 /// The highest N of a `subsection body N` in the case file's text (0: none), so that

@@ -109,6 +109,29 @@ CoupledSimulation<dim>::CoupledSimulation(const sph::CaseDescription<dim>& fluid
   }
   if (contact.enabled)
     cosim_->enable_contact(contact.parameters);
+  if (const auto& source = case_.chip_source; !source.bodies.empty())
+  {
+    coupling::ChipSourceSettings<dim> s;
+    for (const std::string& name : source.bodies)
+    {
+      int found = -1;
+      for (std::size_t b = 0; b < case_.bodies.size(); ++b)
+        if (case_.bodies[b].name == name)
+          found = int(b);
+      if (found < 0)
+        throw InputError("bodies/chip source, bodies", "no body named '" + name + "'");
+      s.pool.push_back(found);
+    }
+    s.first_release = source.first_release;
+    s.interval = source.interval;
+    s.position = source.position;
+    s.rotation = source.rotation;
+    s.velocity = source.velocity;
+    s.angular_velocity = source.angular_velocity;
+    s.exit_point = source.exit_point;
+    s.exit_normal = source.exit_normal;
+    chip_source_ = std::make_unique<coupling::ChipSource<dim>>(*cosim_, s);
+  }
   const auto& a = contact.torque_axis;
   if (!a.empty())
   {
@@ -238,6 +261,13 @@ std::vector<std::string> CoupledSimulation<dim>::probe_columns() const
     for (const auto& [name, value] : b.body->extra_probes())
       columns.push_back(b.name + "_" + name);
   }
+  if (chip_source_)
+  {
+    for (int b : chip_source_->settings().pool)
+      columns.push_back(case_.bodies[b].name + "_chip"); // the chip it carries, 0: parked
+    for (const char* c : {"chips_released", "chips_removed", "chips_skipped"})
+      columns.push_back(c);
+  }
   return columns;
 }
 
@@ -278,6 +308,14 @@ std::vector<double> CoupledSimulation<dim>::probe_values() const
     for (const auto& [name, value] : body.extra_probes())
       values.push_back(value);
   }
+  if (chip_source_)
+  {
+    for (std::size_t k = 0; k < chip_source_->settings().pool.size(); ++k)
+      values.push_back(double(chip_source_->chip_number(int(k))));
+    values.push_back(double(chip_source_->released()));
+    values.push_back(double(chip_source_->removed()));
+    values.push_back(double(chip_source_->skipped()));
+  }
   return values;
 }
 
@@ -286,6 +324,11 @@ void CoupledSimulation<dim>::save(Hdf5File& file) const
 {
   fluid_.save(file);
   cosim_->save_bodies(file, "/bodies");
+  if (chip_source_)
+  {
+    const auto state = chip_source_->state();
+    file.write("/chip_source", state, {state.size()});
+  }
   file.ensure_group("/probes");
   for (std::size_t b = 0; b < case_.bodies.size(); ++b)
   {
@@ -306,6 +349,12 @@ void CoupledSimulation<dim>::load(const Hdf5File& file)
 {
   fluid_.load(file);
   cosim_->load_bodies(file, "/bodies");
+  if (chip_source_)
+  {
+    if (!file.exists("/chip_source"))
+      throw InputError(file.path(), "checkpoint has no chip source state (written without one)");
+    chip_source_->restore(file.read_doubles("/chip_source"));
+  }
   for (std::size_t b = 0; b < case_.bodies.size(); ++b)
   {
     std::vector<std::size_t> shape;
@@ -346,6 +395,12 @@ std::string CoupledSimulation<dim>::summary() const
       << (b.displaced_fluid
               ? ", " + std::to_string(b.displaced_fluid) + " fluid particles inside it removed"
               : std::string());
+  if (chip_source_)
+  {
+    const auto& c = chip_source_->settings();
+    s << "\nchip source: " << c.pool.size() << " bodies in its pool, a chip every " << c.interval
+      << " s from " << c.first_release << " s";
+  }
   if (const auto* contact = cosim_->contact())
     s << "\ncontact: restitution " << contact->parameters().restitution << ", friction "
       << contact->parameters().friction << ", " << contact->n_obstacles() << " walls";
@@ -409,6 +464,10 @@ std::string CoupledSimulation<dim>::finish(const std::string& output_directory) 
          << " peak_fluid_speed_m_s=" << peak_fluid_speed() << " steps=" << step_count()
          << " wall_s=" << wall << (b + 1 < case_.bodies.size() ? "\n" : "");
   }
+  if (chip_source_)
+    line << "\nsummary: chip_source released=" << chip_source_->released()
+         << " removed=" << chip_source_->removed() << " skipped=" << chip_source_->skipped()
+         << " in_segment=" << chip_source_->released() - chip_source_->removed();
   return line.str();
 }
 

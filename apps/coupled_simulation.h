@@ -12,6 +12,7 @@
 #include "apps/contact_case_keys.h"
 #include "apps/fluid_simulation.h"
 #include "apps/surface_output.h"
+#include "coupling/chip_source.h"
 #include "coupling/co_simulation.h"
 
 #include <array>
@@ -62,6 +63,7 @@ private:
   FluidSimulation<dim> fluid_;
   BodyCase<dim> case_;
   std::unique_ptr<coupling::CoSimulation<dim>> cosim_;
+  std::unique_ptr<coupling::ChipSource<dim>> chip_source_; ///< null without one
   std::vector<Vector> probe_start_;
   std::vector<std::vector<Sample>> histories_;
   std::vector<Sample> last_step_; ///< per body: the probe at the last step, for interpolation

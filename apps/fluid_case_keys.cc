@@ -97,8 +97,8 @@ void declare_fluid_keys(ParameterHandler& prm)
                     "world axes; 2D: 0, 0, omega_z), e.g. the drill's frame: its walls stand "
                     "still, and every fluid particle and rigid or flexible body feels the "
                     "centrifugal, Coriolis and Euler accelerations. 0, 0, 0: an inertial frame.");
-  prm.declare_entry("axis point", "0, 0, 0", Anything(),
-                    "A point on the axis of rotation, m (dim components).");
+  prm.declare_entry("axis point", "", Anything(),
+                    "A point on the axis of rotation, m (dim components); empty: the origin.");
   prm.declare_entry("spin-up time", "0", Double(0),
                     "The frame's speed rises from 0 to the angular velocity over this time, "
                     "smoothly ((1 - cos(pi t / T)) / 2), s. 0: it turns from the start.");
@@ -192,7 +192,9 @@ std::string read_fluid_keys(ParameterHandler& prm, sph::CaseDescription<dim>& c)
       throw InputError("rotating frame/angular velocity",
                        "a 2D case turns about z, the out-of-plane axis: give 0, 0, omega_z");
     frame.axis_point.setZero();
-    frame.axis_point.head<dim>() = vector_of<dim>("rotating frame/axis point", prm.get("axis point"));
+    if (!trim(prm.get("axis point")).empty())
+      frame.axis_point.head<dim>() =
+          vector_of<dim>("rotating frame/axis point", prm.get("axis point"));
     frame.spin_up_time = prm.get_double("spin-up time");
   }
   prm.leave_subsection();

@@ -70,8 +70,11 @@ void CoSimulation<dim>::enable_contact(const ContactParameters& parameters)
       throw InputError("body '" + c.name + "'",
                        "its mass is unknown (an FMU body), so it cannot take part in contact");
     if (std::isfinite(body->mass()))
+    {
       c.contact_id = contact_->add_body(body->skin(), body->mass(), c.name,
                                         [body](double dt) { return body->contact_lead(dt); });
+      contact_->set_active(c.contact_id, !c.parked);
+    }
     else
       contact_->add_obstacle(fluid_.wall(c.wall_id));
   }
@@ -97,12 +100,23 @@ void CoSimulation<dim>::exchange_and_advance()
   for (std::size_t b = 0; b < bodies_.size(); ++b)
   {
     auto& c = bodies_[b];
+    if (c.parked)
+      continue;
     if (contact_ && c.contact_id >= 0)
       c.wall->deliver(fluid_.wall_vertex_forces(c.wall_id), &contact_->body_forces(c.contact_id));
     else
       c.wall->deliver(fluid_.wall_vertex_forces(c.wall_id));
     c.body->advance(dt);
   }
+}
+
+template <int dim>
+void CoSimulation<dim>::set_parked(int b, bool parked)
+{
+  auto& c = bodies_.at(b);
+  c.parked = parked;
+  if (contact_ && c.contact_id >= 0)
+    contact_->set_active(c.contact_id, !parked);
 }
 
 template <int dim>

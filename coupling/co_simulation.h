@@ -64,6 +64,12 @@ public:
   /// Null without contact.
   const ContactModel<dim>* contact() const { return contact_.get(); }
 
+  /// A parked body (a chip source's chip waiting for its release, or removed) stands
+  /// still where it is, takes no fluid or contact force and touches nothing. Park it
+  /// where no fluid reaches its skin (its skin stays a wall of the fluid).
+  void set_parked(int b, bool parked);
+  bool parked(int b) const { return bodies_[b].parked; }
+
   /// One fluid step and the bodies with it; returns dt.
   double step();
   double time() const { return fluid_.time(); }
@@ -99,6 +105,7 @@ private:
     int wall_id;
     std::string name;
     int contact_id = -1; ///< its index in the contact model (-1: none, or an obstacle)
+    bool parked = false;
   };
   void publish_skins();
   void exchange_and_advance();

@@ -279,7 +279,8 @@ void ContactModel<dim>::bin_faces()
   large_faces_.clear();
   used_cells_ = 0;
   for (int s = no; s < ns; ++s)
-    used_cells_ += bin_surface(s, thickness_, grid_, large_faces_);
+    if (bodies_[s - no].active)
+      used_cells_ += bin_surface(s, thickness_, grid_, large_faces_);
 }
 
 template <int dim>
@@ -403,7 +404,7 @@ void ContactModel<dim>::detect()
     }
   };
   for (int b = 0; b < n_bodies(); ++b)
-    for (int i = 0; i < int(bodies_[b].xp.size()); ++i)
+    for (int i = 0; bodies_[b].active && i < int(bodies_[b].xp.size()); ++i)
       test_node(no + b, i, bodies_[b].xp[i]);
   // The obstacles' vertices against the bodies' faces: a wall's corner or a barrier's
   // end that pokes into a body between its nodes.

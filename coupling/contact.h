@@ -94,6 +94,11 @@ public:
   /// The obstacle's surface (its name and current vertices, where obstacle_forces act).
   const sph::WallSurface<dim>& obstacle(int o) const { return *obstacles_[o].wall; }
 
+  /// A body set inactive (a chip parked by a chip source) touches nothing and takes no
+  /// contact force until it is active again.
+  void set_active(int b, bool active) { bodies_[b].active = active; }
+  bool active(int b) const { return bodies_[b].active; }
+
   int n_bodies() const { return int(bodies_.size()); }
   int n_obstacles() const { return int(obstacles_.size()); }
   int n_contacts() const { return n_contacts_; }      ///< last compute()
@@ -121,6 +126,7 @@ private:
     std::string name;
     std::function<double(double)> lead;
     std::vector<Vector> x, v, xp, force; ///< now, velocity, half a step ahead, contact
+    bool active = true;
   };
   /// Surfaces are numbered obstacles first (index o), then bodies (n_obstacles + b).
   /// A contact: node `node` of surface `owner` behind face `face` of surface `partner`.

@@ -4,6 +4,7 @@
 // bodies, chains and reduced flexible bodies (mbs/) and SPH solids (sph/) each get one
 // small adapter implementing this, so the loop never branches on the body kind.
 
+#include "common/input_error.h"
 #include "mbs/skin_body.h"
 
 #include <string>
@@ -63,6 +64,17 @@ public:
   /// Further named probe values a kind reports (e.g. a moving wall's force and torque),
   /// names with their unit as a suffix ("force_x_N").
   virtual std::vector<std::pair<std::string, double>> extra_probes() const { return {}; }
+
+  /// Puts the body, undeformed, at a new pose with new velocities (world; 2D: the
+  /// angular velocity's z) at the run's time t: a chip source's release. Kinds that
+  /// cannot be placed throw.
+  virtual void place(double /*t*/, const Vector& /*position*/,
+                     const Eigen::Matrix<double, dim, dim>& /*rotation*/,
+                     const Vector& /*velocity*/, const Eigen::Vector3d& /*angular_velocity*/)
+  {
+    throw InputError("chip source", "a body of kind " + kind() +
+                                        " cannot be released by a chip source (rigid or flexible)");
+  }
 
   /// The complete dynamic state for checkpoints; restore(state()) is exact.
   virtual std::vector<double> state() const = 0;

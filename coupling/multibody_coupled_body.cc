@@ -114,6 +114,29 @@ double MultibodyCoupledBody<dim>::strain_energy() const
   return e;
 }
 
+template <int dim>
+void MultibodyCoupledBody<dim>::place(double t, const Vector& position,
+                                      const Eigen::Matrix<double, dim, dim>& rotation,
+                                      const Vector& velocity,
+                                      const Eigen::Vector3d& angular_velocity)
+{
+  if (system_->n_bodies() != 1 || system_->body(0).clamped_to_ground())
+    throw InputError("chip source", "a " + kind_ +
+                                        " body of several parts or clamped cannot be released");
+  auto& body = system_->body(0);
+  body.set_pose(position, rotation);
+  Eigen::Matrix<double, mbs::rotation_dofs<dim>, 1> omega;
+  if constexpr (dim == 2)
+    omega[0] = angular_velocity.z();
+  else
+    omega = rotation.transpose() * angular_velocity; // the body frame's
+  body.set_frame_velocity(velocity, omega);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(body.n_modes());
+  body.set_modal_state(zero, zero);
+  system_->reset_accelerations();
+  system_->set_time(t); // its time-dependent loads (a frame spinning up) at the run's time
+}
+
 template class MultibodyCoupledBody<2>;
 template class MultibodyCoupledBody<3>;
 } // namespace chipflex::coupling

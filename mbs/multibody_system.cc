@@ -527,6 +527,21 @@ void MultibodySystem<dim>::restore_state(const std::vector<double>& s)
   std::vector<double> probe;
   for (const auto& b : bodies_)
     b->save_state(probe);
+  // A state saved before the first step (the system not yet laid out) has no integrator
+  // history: the accelerations start afresh from it.
+  const bool fresh = s.size() == 4 + probe.size() && static_cast<int>(s[0]) == -1;
+  if (fresh)
+  {
+    time_ = s[2];
+    const double* p = s.data() + 4;
+    for (auto& b : bodies_)
+      p = b->restore_state(p);
+    for (Eigen::VectorXd* v : {&a_, &abar_, &lambda_})
+      v->setZero();
+    initialized_ = false;
+    factored_h_ = -1;
+    return;
+  }
   const std::size_t expected = 4 + probe.size() + 2 * nv_ + nc_;
   if (s.size() != expected || static_cast<int>(s[0]) != nv_ || static_cast<int>(s[1]) != nc_)
     throw InputError("multibody checkpoint", "state of " + std::to_string(s.size()) +

@@ -8,10 +8,12 @@
 #     END_TIME  simulated time in s (default: the case files' 0.02)
 #   Environment: CHIPFLEX (default build/bin/chipflex), THREADS (default 2),
 #   VARIANTS (default "rigid flexible"), DP (particle spacing, m; default the case's
-#   0.00075; the open boundaries' layers follow so that layers * dp stays 3 mm).
+#   0.00075; the open boundaries' layers follow so that layers * dp stays 3 mm),
+#   SCALE (the similitude's speed scale k, default the case files' 4: coolant 50/k l/min,
+#   drill 133/k rad/s, chips' E 210/k^2 GPa, c0 120/k m/s; 1: the full-scale process).
 set -e
 if [ $# -lt 1 ]; then
-  sed -n '2,12p' "$0"
+  sed -n '2,14p' "$0"
   exit 2
 fi
 here=$(cd "$(dirname "$0")" && pwd)
@@ -26,12 +28,20 @@ cd "$out"
 # segment with the barrier at 20 mm (the case files' boxes and probes match these).
 python3 "$here/make_flute_geometry.py" --diameter 0.02 --flute-angle 120 --length 0.03 \
   --barrier 0.02 --out "$out" > geometry.log
-if [ ! -f chip.h5 ]; then
-  # A ribbon chip, 10 x 2 x 0.1 mm, of 42CrMo4 steel (E 210 GPa, nu 0.3, rho 7850 kg/m^3).
+scale=${SCALE:-4}
+num() { awk "BEGIN { printf \"%.6g\", $1 }"; }
+modulus=$(num "2.1e11 / ($scale * $scale)")
+if [ ! -f chip.h5 ] || [ "$(cat chip.modulus 2>/dev/null)" != "$modulus" ]; then
+  # A ribbon chip, 10 x 2 x 0.1 mm, of 42CrMo4 steel (E 210 GPa, nu 0.3, rho 7850 kg/m^3),
+  # its E divided by k^2 (the similitude keeps the Cauchy number).
   "$chipflex" mesh chip --shape ribbon --length 0.01 --width 0.002 --thickness 0.0001 \
     --size 0.0005 -o chip.msh > chip.log
-  "$chipflex" reduce chip.msh -o chip.h5 --E 2.1e11 --nu 0.3 --rho 7850 --modes 10 >> chip.log
+  "$chipflex" reduce chip.msh -o chip.h5 --E "$modulus" --nu 0.3 --rho 7850 --modes 10 >> chip.log
+  echo "$modulus" > chip.modulus
 fi
+omega=$(num "133 / $scale")
+flow=$(num "8.3333e-4 / $scale")
+c0=$(num "120 / $scale")
 layers=""
 if [ -n "$DP" ]; then
   layers=$(awk "BEGIN { printf \"%d\", 0.003 / $DP + 0.5 }")
@@ -40,6 +50,10 @@ for v in ${VARIANTS:-rigid flexible}; do
   case_file=$here/flute_3d_$v.prm
   [ -f "$case_file" ] || { echo "no variant $v ($case_file)" >&2; exit 2; }
   sed -e "${2:+s|^\(  set end time *=\).*|\1 $2|}" \
+      -e "s|^\(  set angular velocity *=\).*|\1 0, 0, $omega|" \
+      -e "s|^\(    set angular velocity *=\).*|\1 0, 0, -$omega|" \
+      -e "s|^\(    set flow rate *=\).*|\1 $flow|" \
+      -e "s|^\(  set speed of sound *=\).*|\1 $c0|" \
       -e "${DP:+s|^\(  set particle spacing *=\).*|\1 $DP|}" \
       -e "${layers:+s|^\(    set layers *=\).*|\1 $layers|}" "$case_file" > "flute_3d_$v.prm"
   "$chipflex" run "flute_3d_$v.prm" --out "$v" --threads "${THREADS:-2}" > "$v.log" 2>&1 ||
