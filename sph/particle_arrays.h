@@ -212,8 +212,10 @@ private:
                     const std::vector<std::uint32_t>& permutation, std::vector<double>& scratch)
   {
     static_assert(sizeof(T) <= sizeof(double));
-    T* tmp = reinterpret_cast<T*>(scratch.data());
     const std::size_t n = permutation.size();
+    if (n == 0) // an empty array's data() may be null, which memcpy must not get
+      return;
+    T* tmp = reinterpret_cast<T*>(scratch.data());
     T* base = a.data() + first;
 #pragma omp parallel for schedule(static) if (n > light_parallel_threshold)
     for (std::size_t k = 0; k < n; ++k)

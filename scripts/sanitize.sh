@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# The sanitizer and fuzzing stage (docs/fuzzing.md; CI runs it after scripts/test.sh):
+# clang builds the fast unit tests and the libFuzzer targets of the readers of user input
+# with AddressSanitizer and UndefinedBehaviorSanitizer in build_sanitize/, then runs the
+# fast tests there and each fuzz target for FUZZ_SECONDS (default 30) over its corpus.
+#   FUZZ_SECONDS=600 bash scripts/sanitize.sh     the long fuzz runs
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install_dependencies.sh
+packages=(clang libclang-rt-14-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+fuzzers=(fuzz_gmsh_mesh fuzz_surface_mesh fuzz_body_file fuzz_fmu_description fuzz_case_file)
+unit_tests=(test_common test_mbs test_sph test_coupling)
+CC=clang CXX=clang++ cmake -S . -B build_sanitize -DCMAKE_BUILD_TYPE=Release \
+  -DCHIPFLEX_FUZZ=ON -DCHIPFLEX_NATIVE=OFF > /dev/null
+cmake --build build_sanitize -j"$(nproc)" --target "${fuzzers[@]}" "${unit_tests[@]}"
+cd build_sanitize
+export LSAN_OPTIONS="suppressions=$PWD/../tests/fuzz/lsan.supp"
+# The fast unit tests (Catch2's [validation] cases are the long runs).
+for t in "${unit_tests[@]}"; do
+  echo "== $t (AddressSanitizer, UndefinedBehaviorSanitizer)"
+  OMP_NUM_THREADS=2 "bin/$t" "~[validation]" | tail -2
+done
+seconds=${FUZZ_SECONDS:-30}
+for f in "${fuzzers[@]}"; do
+  target=${f#fuzz_}
+  corpus=$(mktemp -d)
+  cp ../tests/fuzz/corpus/"$target"/* "$corpus"/
+  dict=()
+  [ -f ../tests/fuzz/"$target".dict ] && dict=(-dict=../tests/fuzz/"$target".dict)
+  echo "== $f for $seconds s"
+  log=$(mktemp)
+  if ! "bin/$f" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+    "${dict[@]}" "$corpus" > "$log" 2>&1; then
+    tail -40 "$log"
+    echo "FAIL: $f found a crash, a hang, a leak or an out-of-memory (the input: build_sanitize/crash-*, leak-*, timeout-* or oom-*)"
+    exit 1
+  fi
+  grep -E "^#[0-9]+ +DONE" "$log"
+  rm -f "$log"
+  rm -rf "$corpus"
+done
