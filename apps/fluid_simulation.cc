@@ -18,8 +18,9 @@ std::string open_boundary_flow_text(const sph::OpenBoundary<dim>& z)
   if (z.kind == sph::OpenBoundaryKind::inlet)
     s << "mean velocity " << z.velocity << " m/s ("
       << (z.profile == sph::InletProfile::parabolic ? "parabolic" : "uniform") << "), flow rate "
-      << (z.flow_rate > 0 && z.profile == sph::InletProfile::uniform ? z.flow_rate
-                                                                       : z.velocity * z.section_area())
+      << (z.flow_rate > 0 && z.profile == sph::InletProfile::uniform
+              ? z.flow_rate
+              : z.velocity * z.section_area())
       << (dim == 2 ? " m^2/s" : " m^3/s");
   else
     s << "pressure " << z.pressure << " Pa";

@@ -23,13 +23,13 @@ template <int dim>
 struct ChipSourceSettings
 {
   using Vector = Eigen::Matrix<double, dim, 1>;
-  std::vector<int> pool;    ///< CoSimulation body indices, released in this order
-  double first_release = 0; ///< s
-  double interval = 0;      ///< s between releases (> 0)
-  Vector position = Vector::Zero();                          ///< the body frame's, m
+  std::vector<int> pool;            ///< CoSimulation body indices, released in this order
+  double first_release = 0;         ///< s
+  double interval = 0;              ///< s between releases (> 0)
+  Vector position = Vector::Zero(); ///< the body frame's, m
   Eigen::Matrix<double, dim, dim> rotation = Eigen::Matrix<double, dim, dim>::Identity();
-  Vector velocity = Vector::Zero();                          ///< m/s
-  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero(); ///< rad/s (2D: z)
+  Vector velocity = Vector::Zero();                                 ///< m/s
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();       ///< rad/s (2D: z)
   Vector exit_point = Vector::Zero(), exit_normal = Vector::Zero(); ///< out: n.(x - p) > 0
 };
 

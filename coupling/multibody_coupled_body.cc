@@ -121,8 +121,8 @@ void MultibodyCoupledBody<dim>::place(double t, const Vector& position,
                                       const Eigen::Vector3d& angular_velocity)
 {
   if (system_->n_bodies() != 1 || system_->body(0).clamped_to_ground())
-    throw InputError("chip source", "a " + kind_ +
-                                        " body of several parts or clamped cannot be released");
+    throw InputError("chip source",
+                     "a " + kind_ + " body of several parts or clamped cannot be released");
   auto& body = system_->body(0);
   body.set_pose(position, rotation);
   Eigen::Matrix<double, mbs::rotation_dofs<dim>, 1> omega;

@@ -49,7 +49,7 @@ public:
   /// One free body only (a rigid or flexible kind): pose, velocities, q = q' = 0.
   void place(double t, const Vector& position, const Eigen::Matrix<double, dim, dim>& rotation,
              const Vector& velocity, const Eigen::Vector3d& angular_velocity) override;
-    std::vector<double> state() const override { return system_->save_state(); }
+  std::vector<double> state() const override { return system_->save_state(); }
   void restore(const std::vector<double>& state) override { system_->restore_state(state); }
 
   double natural_frequency_hz() const override { return natural_frequency_hz_; }

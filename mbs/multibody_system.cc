@@ -268,7 +268,7 @@ void MultibodySystem<dim>::step_generalized_alpha(double h)
     scatter(incr_, v1_);
   };
   constexpr int stale_limit = 4; // iterations a kept matrix may need before it is renewed
-  force_time_ = time_ + h;        // the iterate is the state at the end of the step
+  force_time_ = time_ + h;       // the iterate is the state at the end of the step
   int it = 0;
   double last_correction = 0;
   for (;; ++it)

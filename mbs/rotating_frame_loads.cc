@@ -74,8 +74,8 @@ void FloatingFrameBody<dim>::add_frame_inertia(const RotatingFrame& frame, doubl
   const Matrix c_up = Eigen::Map<const Matrix>(vec_cup.data());
   out.template head<dim>() -=
       rotation_ * (l_b * (mass_ * r + s_) + k_b * (mass_ * rd + w_b * s_ + tqd));
-  const Matrix c = c_uu_ * l_b.transpose() + c_uu_ * w_b.transpose() * k_b.transpose() +
-                   c_up * k_b.transpose();
+  const Matrix c =
+      c_uu_ * l_b.transpose() + c_uu_ * w_b.transpose() * k_b.transpose() + c_up * k_b.transpose();
   if constexpr (dim == 2)
     out(2) -= cross(s_, field) + axial(c);
   else

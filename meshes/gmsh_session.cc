@@ -6,11 +6,11 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <sstream>
-#include <string>
 #include <gmsh.h>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
+#include <string>
 #include <unistd.h>
 
 namespace chipflex::meshes

@@ -222,8 +222,7 @@ std::unique_ptr<FluidSolver<dim>> build_fluid(CaseDescription<dim>& c)
       throw InputError("open boundaries/" + z.name,
                        "the plane must lie a whole number of particle spacings from the "
                        "lattice origin (the tank's min corner)");
-    if (z.kind == OpenBoundaryKind::inlet && z.flow_rate > 0 &&
-        z.profile == InletProfile::uniform)
+    if (z.kind == OpenBoundaryKind::inlet && z.flow_rate > 0 && z.profile == InletProfile::uniform)
     {
       std::size_t filled = 0;
       lattice<dim>(z.box_min, z.box_max, origin, dp,

@@ -51,7 +51,7 @@ struct BodyContext
   BodyPlacement<dim> placement;
   Eigen::Matrix<double, dim, 1> gravity = Eigen::Matrix<double, dim, 1>::Zero();
   RotatingFrame rotating_frame; ///< the case's frame (the fluid's): fictitious forces
-  double particle_spacing = 0; ///< the fluid's dp, m (default skin spacing)
+  double particle_spacing = 0;  ///< the fluid's dp, m (default skin spacing)
   mbs::IntegratorOptions integrator;
   double max_step = 0; ///< body sub-step limit, s (0: one per fluid step)
 };

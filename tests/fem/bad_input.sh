@@ -34,6 +34,14 @@ out="$dir/out.h5"
 expect "missing mesh" "nothing.msh" "$out" "$chipflex" reduce "$dir/nothing.msh" -o "$out" $rubber
 printf 'this is not a mesh\n' > "$dir/garbage.msh"
 expect "malformed mesh" "garbage.msh" "$out" "$chipflex" reduce "$dir/garbage.msh" -o "$out" $rubber
+# Damaged headers that libgmsh 4.8 itself fails on (found by tests/fuzz): a node count of
+# 1e16 (it would allocate that much) and a physical name without its quotes (it crashes).
+sed '0,/^\$Nodes/{/^\$Nodes/{n;s/^\([0-9]*\) [0-9]*/\1 10000000000000000/}}' "$dir/gate.msh" > "$dir/huge.msh"
+expect "huge count" "larger than a file of this size" "$out" \
+  "$chipflex" reduce "$dir/huge.msh" -o "$out" $rubber
+sed 's/^1 2 "clamp"$/1 2 clamp/' "$dir/gate.msh" > "$dir/unquoted.msh"
+expect "unquoted physical name" "not a physical name" "$out" \
+  "$chipflex" reduce "$dir/unquoted.msh" -o "$out" $rubber
 head -c 3000 "$dir/gate.msh" > "$dir/truncated.msh"
 expect "truncated mesh" "truncated.msh" "$out" \
   "$chipflex" reduce "$dir/truncated.msh" -o "$out" $rubber

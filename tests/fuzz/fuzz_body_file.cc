@@ -66,8 +66,8 @@ struct Writer
       return;
     for (auto& s : shape)
       s = size_near(s);
-    const std::size_t count = std::accumulate(shape.begin(), shape.end(), std::size_t(1),
-                                              std::multiplies<std::size_t>());
+    const std::size_t count =
+        std::accumulate(shape.begin(), shape.end(), std::size_t(1), std::multiplies<std::size_t>());
     std::vector<double> v(count);
     for (auto& x : v)
       x = value();
@@ -79,8 +79,8 @@ struct Writer
       return;
     for (auto& s : shape)
       s = size_near(s);
-    const std::size_t count = std::accumulate(shape.begin(), shape.end(), std::size_t(1),
-                                              std::multiplies<std::size_t>());
+    const std::size_t count =
+        std::accumulate(shape.begin(), shape.end(), std::size_t(1), std::multiplies<std::size_t>());
     std::vector<std::int64_t> v(count);
     for (auto& x : v)
       x = in.ConsumeIntegralInRange<std::int64_t>(-2, range + 1);
@@ -89,8 +89,8 @@ struct Writer
   void attribute(const std::string& name, std::int64_t typical, std::int64_t lo, std::int64_t hi)
   {
     if (!skip())
-      file.write_attribute("/meta", name, in.ConsumeBool() ? typical
-                                                           : in.ConsumeIntegralInRange(lo, hi));
+      file.write_attribute("/meta", name,
+                           in.ConsumeBool() ? typical : in.ConsumeIntegralInRange(lo, hi));
   }
   void attribute(const std::string& name, double typical)
   {
@@ -166,9 +166,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       w.doubles("/inertia/c_psi_psi", {m, m, d, d});
       if (in.ConsumeBool())
       {
-        file.write_attribute("/nonlinear", "model", in.ConsumeBool()
-                                                         ? std::string("st_venant_kirchhoff")
-                                                         : in.ConsumeRandomLengthString(8));
+        file.write_attribute("/nonlinear", "model",
+                             in.ConsumeBool() ? std::string("st_venant_kirchhoff")
+                                              : in.ConsumeRandomLengthString(8));
         file.write_attribute("/nonlinear", "n_modal_derivatives",
                              in.ConsumeIntegralInRange<std::int64_t>(-1, 5));
         const std::size_t q = m * (m + 1) * (m + 2) / 6, c = q * (m + 3) / 4;

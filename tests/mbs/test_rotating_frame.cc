@@ -87,8 +87,8 @@ PathErrors run_free_beam(int n_modes, bool with_frame_loads)
     const Eigen::Matrix<double, dim, dim> a_expected = rf.transpose() * a0;
     e.position = std::max(e.position, (body.position() - r_expected).norm());
     const Eigen::Matrix<double, dim, dim> da = a_expected.transpose() * body.rotation();
-    e.rotation = std::max(e.rotation, std::acos(std::clamp((da.trace() - (dim - 2)) /
-                                                               2.0, -1.0, 1.0)));
+    e.rotation =
+        std::max(e.rotation, std::acos(std::clamp((da.trace() - (dim - 2)) / 2.0, -1.0, 1.0)));
     if (n_modes > 0) // the nodes' elastic displacement Psi_i q
     {
       const Eigen::VectorXd u = beam.body.psi.leftCols(n_modes) * body.modal_coordinates();

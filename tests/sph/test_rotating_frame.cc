@@ -84,8 +84,8 @@ TEST_CASE("lone fluid particles in a turning frame follow their lab rest turned 
   // the second-order error over 10 rad is (Omega dt)^2 theta r ~ 4e-5 m (measured: 4.2e-5
   // and 5.3e-5 m). Evaluating the mid-step pass at the step's start instead gave 6e-4 m;
   // a missing term (without Coriolis the points fly outwards) fails by far.
-  std::cout << "lone particles in a turning frame: largest path error " << e2 << " m (2D), "
-            << e3 << " m (3D)\n";
+  std::cout << "lone particles in a turning frame: largest path error " << e2 << " m (2D), " << e3
+            << " m (3D)\n";
   CHECK(e2 < 1e-4);
   CHECK(e3 < 1e-4);
 }
@@ -110,8 +110,8 @@ TEST_CASE("water turning with its closed tank: p - p(axis) = rho Omega^2 r^2 / 2
   auto fluid = build_fluid(c);
   fluid->initialise();
   const std::size_t n0 = fluid->n_particles();
-  const std::vector<Eigen::Vector2d> points = {
-      {0, 0}, {0.04, 0}, {0.08, 0}, {0, -0.08}, {0.0566, 0.0566}, {-0.0566, -0.0566}};
+  const std::vector<Eigen::Vector2d> points = {{0, 0},     {0.04, 0},        {0.08, 0},
+                                               {0, -0.08}, {0.0566, 0.0566}, {-0.0566, -0.0566}};
   std::vector<double> sum(points.size(), 0.0);
   int samples = 0;
   while (fluid->time() < 1.2)
