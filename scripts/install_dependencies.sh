@@ -6,12 +6,14 @@
 # common/fmi2_model_description.cc). python3-h5py: tests/apps opens the run outputs with it
 # (ParaView's python3-paraview does more, but is too large to install here; the test uses it
 # where present).
+# Further packages given as arguments are installed with them (scripts/sanitize.sh: clang).
 set -euo pipefail
 packages=(
   cmake g++ make pkg-config
   libdeal.ii-dev petsc-dev slepc-dev libhdf5-openmpi-dev libeigen3-dev
   gmsh libgmsh-dev catch2 openmpi-bin libopenblas0-pthread gnuplot-nox python3-h5py
   libzip-dev libpugixml-dev
+  "$@"
 )
 missing=()
 for p in "${packages[@]}"; do

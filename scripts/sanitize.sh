@@ -6,17 +6,7 @@
 #   FUZZ_SECONDS=600 bash scripts/sanitize.sh     the long fuzz runs
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install_dependencies.sh
-packages=(clang libclang-rt-14-dev)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  SUDO=""
-  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
-fi
+bash scripts/install_dependencies.sh clang libclang-rt-14-dev
 fuzzers=(fuzz_gmsh_mesh fuzz_surface_mesh fuzz_body_file fuzz_fmu_description fuzz_case_file)
 unit_tests=(test_common test_mbs test_sph test_coupling)
 CC=clang CXX=clang++ cmake -S . -B build_sanitize -DCMAKE_BUILD_TYPE=Release \

@@ -60,14 +60,19 @@ struct Writer
       return in.ConsumeFloatingPointInRange<double>(-2, 2);
     }
   }
+  /// Each extent near its intended size; returns the number of entries.
+  std::size_t perturb(std::vector<std::size_t>& shape)
+  {
+    for (auto& s : shape)
+      s = size_near(s);
+    return std::accumulate(shape.begin(), shape.end(), std::size_t(1),
+                           std::multiplies<std::size_t>());
+  }
   void doubles(const std::string& name, std::vector<std::size_t> shape)
   {
     if (skip())
       return;
-    for (auto& s : shape)
-      s = size_near(s);
-    const std::size_t count =
-        std::accumulate(shape.begin(), shape.end(), std::size_t(1), std::multiplies<std::size_t>());
+    const std::size_t count = perturb(shape);
     std::vector<double> v(count);
     for (auto& x : v)
       x = value();
@@ -77,10 +82,7 @@ struct Writer
   {
     if (skip())
       return;
-    for (auto& s : shape)
-      s = size_near(s);
-    const std::size_t count =
-        std::accumulate(shape.begin(), shape.end(), std::size_t(1), std::multiplies<std::size_t>());
+    const std::size_t count = perturb(shape);
     std::vector<std::int64_t> v(count);
     for (auto& x : v)
       x = in.ConsumeIntegralInRange<std::int64_t>(-2, range + 1);

@@ -77,6 +77,37 @@ void nodal_reference(const FloatingFrameBody<dim>& body, const Eigen::MatrixXd& 
   }
 }
 
+/// A free body put in motion: at `position` (every coordinate), turned by `angle` (3D:
+/// about `axis`), moving with `velocity` (every coordinate) and a random angular velocity,
+/// with large random modal amplitudes and rates (several mm of deformation, so that the
+/// q-dependent terms count). Returns q.
+template <int dim>
+Eigen::VectorXd put_in_motion(FloatingFrameBody<dim>& body, std::mt19937& rng, double angle,
+                              const Eigen::Vector3d& axis, double position, double velocity)
+{
+  using V = Eigen::Matrix<double, dim, 1>;
+  std::uniform_real_distribution<double> u(-1, 1);
+  Eigen::Matrix<double, dim, dim> rot;
+  if constexpr (dim == 2)
+    rot = rotation_matrix(angle);
+  else
+    rot = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+  body.set_pose(V::Constant(position), rot);
+  Eigen::Matrix<double, rotation_dofs<dim>, 1> w;
+  for (int c = 0; c < w.size(); ++c)
+    w(c) = 3 * u(rng);
+  body.set_frame_velocity(V::Constant(velocity), w);
+  const int m = body.n_modes();
+  Eigen::VectorXd q(m), qd(m);
+  for (int k = 0; k < m; ++k)
+  {
+    q(k) = 5e-4 * u(rng);
+    qd(k) = 0.05 * u(rng);
+  }
+  body.set_modal_state(q, qd);
+  return q;
+}
+
 template <int dim>
 void check_equations_of_motion(int n_cells, int n_modes)
 {
@@ -91,24 +122,8 @@ void check_equations_of_motion(int n_cells, int n_modes)
   const int m = body.n_modes();
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
-  Eigen::Matrix<double, dim, dim> rot;
-  if constexpr (dim == 2)
-    rot = rotation_matrix(0.7);
-  else
-    rot = Eigen::AngleAxisd(0.9, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-  body.set_pose(V::Constant(0.3), rot);
-  Eigen::Matrix<double, rotation_dofs<dim>, 1> w;
-  for (int c = 0; c < w.size(); ++c)
-    w(c) = 3 * u(rng);
-  body.set_frame_velocity(V::Constant(0.2), w);
-  // large modal amplitudes (several mm of deformation) so the q-dependent terms count
-  Eigen::VectorXd q(m), qd(m);
-  for (int k = 0; k < m; ++k)
-  {
-    q(k) = 5e-4 * u(rng);
-    qd(k) = 0.05 * u(rng);
-  }
-  body.set_modal_state(q, qd);
+  const Eigen::VectorXd q =
+      put_in_motion<dim>(body, rng, dim == 2 ? 0.7 : 0.9, Eigen::Vector3d(1, 2, 3), 0.3, 0.2);
   std::vector<V> f(body.n_nodes());
   std::vector<int> ids(body.n_nodes());
   for (int i = 0; i < body.n_nodes(); ++i)
@@ -185,24 +200,7 @@ void check_frame_inertia(int n_cells, int n_modes)
   FloatingFrameBody<dim> body(beam.body);
   const int m = body.n_modes();
   std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(-1, 1);
-  Eigen::Matrix<double, dim, dim> rot;
-  if constexpr (dim == 2)
-    rot = rotation_matrix(-0.4);
-  else
-    rot = Eigen::AngleAxisd(1.3, Eigen::Vector3d(-1, 2, 0.5).normalized()).toRotationMatrix();
-  body.set_pose(V::Constant(0.2), rot);
-  Eigen::Matrix<double, rotation_dofs<dim>, 1> w;
-  for (int c = 0; c < w.size(); ++c)
-    w(c) = 3 * u(rng);
-  body.set_frame_velocity(V::Constant(-0.3), w);
-  Eigen::VectorXd q(m), qd(m);
-  for (int k = 0; k < m; ++k)
-  {
-    q(k) = 5e-4 * u(rng);
-    qd(k) = 0.05 * u(rng);
-  }
-  body.set_modal_state(q, qd);
+  put_in_motion<dim>(body, rng, dim == 2 ? -0.4 : 1.3, Eigen::Vector3d(-1, 2, 0.5), 0.2, -0.3);
 
   RotatingFrame frame;
   frame.angular_velocity = dim == 2 ? Eigen::Vector3d(0, 0, 7) : Eigen::Vector3d(2, -4, 5);
