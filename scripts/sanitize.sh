@@ -2,7 +2,7 @@
 # The sanitizer and fuzzing stage (docs/fuzzing.md; CI runs it after scripts/test.sh):
 # clang builds the fast unit tests and the libFuzzer targets of the readers of user input
 # with AddressSanitizer and UndefinedBehaviorSanitizer in build_sanitize/, then runs the
-# fast tests there and each fuzz target for FUZZ_SECONDS (default 30) over its corpus.
+# fast tests there and each fuzz target for FUZZ_SECONDS (default 20) over its corpus.
 #   FUZZ_SECONDS=600 bash scripts/sanitize.sh     the long fuzz runs
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,7 +19,7 @@ for t in "${unit_tests[@]}"; do
   echo "== $t (AddressSanitizer, UndefinedBehaviorSanitizer)"
   OMP_NUM_THREADS=2 "bin/$t" "~[validation]" | tail -2
 done
-seconds=${FUZZ_SECONDS:-30}
+seconds=${FUZZ_SECONDS:-20}
 for f in "${fuzzers[@]}"; do
   target=${f#fuzz_}
   corpus=$(mktemp -d)
@@ -34,7 +34,7 @@ for f in "${fuzzers[@]}"; do
     echo "FAIL: $f found a crash, a hang, a leak or an out-of-memory (the input: build_sanitize/crash-*, leak-*, timeout-* or oom-*)"
     exit 1
   fi
-  grep -E "^#[0-9]+ +DONE" "$log"
+  grep -E "^#[0-9]+[[:space:]]+DONE" "$log"
   rm -f "$log"
   rm -rf "$corpus"
 done
