@@ -181,6 +181,8 @@ CaseFile read_case_file(const std::string& path)
     }
     c.end_time = c.dimension == 2 ? c.case_2d.end_time : c.case_3d.end_time;
     c.frame_interval = c.dimension == 2 ? c.case_2d.output_interval : c.case_3d.output_interval;
+    c.jam_watch = c.dimension == 2 ? read_jam_watch_keys(*c.parameters, c.case_2d)
+                                   : read_jam_watch_keys(*c.parameters, c.case_3d);
     prm.enter_subsection("output");
     c.probe_interval = prm.get_double("probe interval");
     prm.leave_subsection();

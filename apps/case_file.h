@@ -9,6 +9,7 @@
 // The case fills plain sph:: structs; the raw ParameterHandler stays available so that
 // coupling/ can read `subsection bodies` (declared in declare_body_keys()).
 
+#include "apps/jam_watch.h"
 #include "sph/case_setup.h"
 
 #include <memory>
@@ -33,6 +34,8 @@ struct CaseFile
   /// `open boundaries/tear warning fraction` (apps/fluid_continuity.h); with no open
   /// boundary the fluid cannot leave, and the check is off.
   double tear_warning_fraction = 1;
+  /// `probes/jam watch` (apps/jam_watch.h); off unless it names a gauge.
+  JamWatchSettings jam_watch;
   /// `open boundaries/watched frequencies`, Hz (apps/channel_acoustics.h).
   std::vector<double> watched_frequencies;
   /// The parsed file (for subsections that other layers read, e.g. bodies).

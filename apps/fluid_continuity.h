@@ -31,6 +31,8 @@ public:
   std::string update(double time, std::size_t n_fluid);
 
   bool torn() const { return warned_; }
+  /// The number of fluid particles at the run's start (restored from a checkpoint).
+  std::size_t start() const { return start_; }
   /// One summary.txt line: start, smallest and last count, the largest drop and whether
   /// it passed the warning fraction.
   std::string summary_line() const;

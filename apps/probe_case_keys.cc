@@ -1,11 +1,12 @@
 // `subsection probes` of a case file (apps/case_file.h): pressure, water-height and
-// flow-rate gauges (probes.csv).
+// flow-rate gauges (probes.csv), and the jam watch that reads them.
 
 #include "apps/probe_case_keys.h"
 
 #include "apps/case_values.h"
 #include "common/input_error.h"
 
+#include <cmath>
 #include <deal.II/base/parameter_handler.h>
 
 namespace chipflex::apps
@@ -91,7 +92,97 @@ void declare_probe_keys(ParameterHandler& prm)
                     "per metre of depth, positive to the right of the section's direction). "
                     "3D: 'name: x, y, z, nx, ny, nz' (the whole plane through the point, "
                     "normal n) -> q_<name>_m3_s (m^3/s, positive along n).");
+  // The jam watch (apps/jam_watch.h, docs/output.md "The jam watch").
+  prm.enter_subsection("jam watch");
+  prm.declare_entry("pressure gauge", "", Anything(),
+                    "A pressure gauge's name (probes/pressure), e.g. the one in front of where "
+                    "bodies can block the flow: the run reports a jam when its running mean "
+                    "reaches `pressure factor` times its reference. Empty: no pressure "
+                    "criterion.");
+  prm.declare_entry("pressure factor", "2", Double(1),
+                    "The pressure criterion: the running mean over its reference at a jam, -.");
+  prm.declare_entry("flow gauge", "", Anything(),
+                    "A flow-rate gauge's name (probes/flow rate), e.g. a section behind the "
+                    "blockage: a jam when its running mean falls to `flow fraction` of its "
+                    "reference. Empty: no flow criterion.");
+  prm.declare_entry("flow fraction", "0.5", Double(0, 1),
+                    "The flow criterion: the running mean over its reference at a jam, -.");
+  prm.declare_entry("reference pressure", "", Anything(),
+                    "The pressure gauge's value in the unblocked flow, Pa (e.g. from a run "
+                    "without the bodies). Empty: the mean over the reference window.");
+  prm.declare_entry("reference flow", "", Anything(),
+                    "The flow gauge's value in the unblocked flow (m^2/s in 2D, m^3/s in 3D). "
+                    "Empty: the mean over the reference window.");
+  prm.declare_entry("reference window", "", Anything(),
+                    "'t0, t1': the probe rows in [t0, t1] (s) whose mean is a reference that "
+                    "is not given (the flow developed, no body there yet).");
+  prm.declare_entry("start time", "0", Double(0),
+                    "Probe rows before this time (the flow's start-up and its first pressure "
+                    "waves) are not watched, s.");
+  prm.declare_entry("averaging time", "0.002", Double(0),
+                    "The running mean's length, s (several probe intervals; longer than the "
+                    "flow's acoustic ringing).");
   prm.leave_subsection();
+  prm.leave_subsection();
+}
+
+template <int dim>
+JamWatchSettings read_jam_watch_keys(ParameterHandler& prm, const sph::CaseDescription<dim>& c)
+{
+  const std::string where = "probes/jam watch/";
+  prm.enter_subsection("probes");
+  prm.enter_subsection("jam watch");
+  JamWatchSettings w;
+  w.pressure_gauge = trim(prm.get("pressure gauge"));
+  w.flow_gauge = trim(prm.get("flow gauge"));
+  w.pressure_factor = prm.get_double("pressure factor");
+  w.flow_fraction = prm.get_double("flow fraction");
+  w.averaging_time = prm.get_double("averaging time");
+  w.start_time = prm.get_double("start time");
+  const auto given = [&](const std::string& key, double& value)
+  {
+    const auto v = numbers(where + key, prm.get(key));
+    if (v.size() > 1 || (v.size() == 1 && !(v[0] > 0)))
+      throw InputError(where + key, "'" + prm.get(key) + "': one positive number expected");
+    if (v.size() == 1)
+      value = v[0];
+  };
+  given("reference pressure", w.reference_pressure);
+  given("reference flow", w.reference_flow);
+  const auto window = numbers(where + "reference window", prm.get("reference window"));
+  prm.leave_subsection();
+  prm.leave_subsection();
+  if (!w.enabled())
+    return w;
+  const bool needs_window = (!w.pressure_gauge.empty() && std::isnan(w.reference_pressure)) ||
+                            (!w.flow_gauge.empty() && std::isnan(w.reference_flow));
+  if (!window.empty() && (window.size() != 2 || !(window[1] > window[0]) || window[0] < 0))
+    throw InputError(where + "reference window", "'t0, t1' with 0 <= t0 < t1 expected");
+  if (needs_window && window.empty())
+    throw InputError(where + "reference window",
+                     "needed: a gauge without its `reference pressure` or `reference flow` takes "
+                     "its reference as the mean over this window ('t0, t1', s)");
+  if (!window.empty())
+  {
+    w.reference_start = window[0];
+    w.reference_end = window[1];
+  }
+  if (!(w.averaging_time > 0))
+    throw InputError(where + "averaging time", "must be positive");
+  // The gauges must exist: a misspelt name would otherwise watch nothing.
+  const auto known = [](const auto& gauges, const std::string& name)
+  {
+    for (const auto& g : gauges)
+      if (g.name == name)
+        return true;
+    return false;
+  };
+  if (!w.pressure_gauge.empty() && !known(c.pressure_probes, w.pressure_gauge))
+    throw InputError(where + "pressure gauge",
+                     "'" + w.pressure_gauge + "' is not among probes/pressure");
+  if (!w.flow_gauge.empty() && !known(c.flow_sections, w.flow_gauge))
+    throw InputError(where + "flow gauge", "'" + w.flow_gauge + "' is not among probes/flow rate");
+  return w;
 }
 
 template <int dim>
@@ -106,4 +197,6 @@ void read_probe_keys(ParameterHandler& prm, sph::CaseDescription<dim>& c)
 
 template void read_probe_keys(ParameterHandler&, sph::CaseDescription<2>&);
 template void read_probe_keys(ParameterHandler&, sph::CaseDescription<3>&);
+template JamWatchSettings read_jam_watch_keys(ParameterHandler&, const sph::CaseDescription<2>&);
+template JamWatchSettings read_jam_watch_keys(ParameterHandler&, const sph::CaseDescription<3>&);
 } // namespace chipflex::apps

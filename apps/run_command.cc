@@ -15,6 +15,7 @@
 #include "apps/channel_acoustics.h"
 #include "apps/commands.h"
 #include "apps/fluid_continuity.h"
+#include "apps/jam_watch.h"
 #include "apps/probe_output.h"
 #include "apps/progress_meter.h"
 #include "apps/simulation_factory.h"
@@ -42,7 +43,7 @@ struct Cadence
 };
 
 void write_checkpoint(const std::string& path, const Simulation& sim, const Cadence& cadence,
-                      const FluidContinuityCheck& continuity)
+                      const FluidContinuityCheck& continuity, const JamWatch* jam)
 {
   AtomicOutput out(path);
   {
@@ -54,6 +55,8 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const Cade
     h5.write_attribute("/run", "next_probe", cadence.next_probe);
     h5.write_attribute("/run", "next_checkpoint", cadence.next_checkpoint);
     continuity.save(h5, "/run");
+    if (jam)
+      jam->save(h5, "/run");
     sim.save(h5);
   }
   out.commit();
@@ -63,7 +66,7 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const Cade
 /// time, steps, frames), then the simulation's result lines. Returns the text.
 std::string write_summary(const std::string& dir, const Simulation& sim, std::size_t frames,
                           const std::string& stop_reason, const FluidContinuityCheck& continuity,
-                          bool open_boundaries)
+                          bool open_boundaries, const JamWatch* jam)
 {
   std::ostringstream s;
   s.precision(9);
@@ -81,7 +84,9 @@ std::string write_summary(const std::string& dir, const Simulation& sim, std::si
     << " lost_particles=" << sim.n_lost_particles()
     << " peak_fluid_speed_m_s=" << sim.peak_fluid_speed() << sim.flow_summary() << "\n";
   if (open_boundaries)
-    s << continuity.summary_line() << "\n";
+    s << continuity.summary_line() << "\n" << sim.mass_balance(continuity.start()) << "\n";
+  if (jam)
+    s << jam->summary_line() << "\n";
   const std::string results = sim.finish(dir);
   if (!results.empty())
     s << results << "\n";
@@ -162,6 +167,14 @@ int run_command(const Arguments& args)
                                                    : channel_length(case_file.case_3d);
     for (const auto& line : acoustic_warnings(sim->speed_of_sound(), length, frequencies))
       std::cout << line << std::endl;
+    // A running mean shorter than the channel's acoustic period follows its ringing (tens
+    // of kPa in a flute) and can report a jam that is none.
+    const double period = 4 * length / sim->speed_of_sound();
+    if (case_file.jam_watch.enabled() && length > 0 && case_file.jam_watch.averaging_time < period)
+      std::cout << "warning: jam watch: the averaging time " << case_file.jam_watch.averaging_time
+                << " s is shorter than the channel's acoustic period 4 L / c0 = " << period
+                << " s; its ringing can pass for a jam (docs/output.md, \"The jam watch\")"
+                << std::endl;
   }
   ParticleOutput particles(dir);
   ProbeOutput probes(dir + "/probes.csv", sim->probe_columns());
@@ -196,6 +209,13 @@ int run_command(const Arguments& args)
   if (cl.has("--restart"))
     continuity.load(Hdf5File(cl.get("--restart"), Hdf5File::Mode::read), "/run");
   continuity.update(sim->time(), sim->n_fluid_particles());
+  std::unique_ptr<JamWatch> jam;
+  if (case_file.jam_watch.enabled())
+  {
+    jam = std::make_unique<JamWatch>(case_file.jam_watch, sim->probe_columns());
+    if (cl.has("--restart"))
+      jam->load(Hdf5File(cl.get("--restart"), Hdf5File::Mode::read), "/run");
+  }
   ProgressMeter progress(sim->time(), end_time);
   std::size_t lost_reported = sim->n_lost_particles();
   const auto report_lost = [&]
@@ -217,7 +237,13 @@ int run_command(const Arguments& args)
       if (t >= cadence.next_probe)
       {
         if (!probes.empty())
-          probes.add(t, sim->probe_values());
+        {
+          const auto row = sim->probe_values();
+          probes.add(t, row);
+          if (jam)
+            if (const std::string line = jam->update(t, row); !line.empty())
+              std::cout << line << std::endl;
+        }
         cadence.next_probe = next_after(t, probe_interval);
       }
       if (t >= cadence.next_frame || t >= end_time)
@@ -232,7 +258,7 @@ int run_command(const Arguments& args)
         // probes.csv first: a run killed after this checkpoint resumes from rows that
         // reach its time (ProbeOutput::resume keeps the rows up to the restart time).
         probes.flush();
-        write_checkpoint(checkpoint_path, *sim, cadence, continuity);
+        write_checkpoint(checkpoint_path, *sim, cadence, continuity, jam.get());
       }
       progress.update(t, sim->step_count());
     }
@@ -250,7 +276,7 @@ int run_command(const Arguments& args)
         particles.write(sim->time(), sim->frame());
       probes.flush();
       std::cout << write_summary(dir, *sim, particles.n_frames(), e.what(), continuity,
-                                 open_boundaries)
+                                 open_boundaries, jam.get())
                 << std::flush;
     }
     catch (const std::exception& w)
@@ -262,7 +288,8 @@ int run_command(const Arguments& args)
   }
   progress.finish(sim->time(), sim->step_count());
   probes.flush();
-  std::cout << write_summary(dir, *sim, particles.n_frames(), "", continuity, open_boundaries)
+  std::cout << write_summary(dir, *sim, particles.n_frames(), "", continuity, open_boundaries,
+                             jam.get())
             << std::flush;
   std::cout << "finished at t = " << sim->time() << " s after " << sim->step_count() << " steps; "
             << particles.n_frames() << " frames in " << dir

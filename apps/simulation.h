@@ -52,6 +52,14 @@ public:
   /// Open boundaries: " inflow_particles=N outflow_particles=M" for the summary line
   /// (particles created by the inlets and removed through the zones), "" without any.
   virtual std::string flow_summary() const { return ""; }
+  /// Open boundaries: the fluid's mass balance since the run's start, one summary.txt
+  /// line "mass_balance: ..." (in, out, lost, stored and what is left over, kg; 2D per
+  /// metre), given the number of fluid particles at the start; "" without any.
+  virtual std::string mass_balance(std::size_t start_fluid_particles) const
+  {
+    (void)start_fluid_particles;
+    return "";
+  }
   /// A few lines describing the set-up, printed at the start.
   virtual std::string summary() const = 0;
   /// At the end of a run, finished or stopped: writes the simulation's own result files

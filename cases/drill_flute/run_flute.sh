@@ -42,6 +42,9 @@ fi
 omega=$(num "133 / $scale")
 flow=$(num "8.3333e-4 / $scale")
 c0=$(num "120 / $scale")
+# The jam watch's references: rho U^2 / 2 with U over the 90 mm^2 the fluid fills, and
+# the flow fed.
+pref=$(num "0.5 * 870 * ($flow / 9.0e-5)^2")
 layers=""
 if [ -n "$DP" ]; then
   layers=$(awk "BEGIN { printf \"%d\", 0.003 / $DP + 0.5 }")
@@ -53,6 +56,8 @@ for v in ${VARIANTS:-rigid flexible}; do
       -e "s|^\(  set angular velocity *=\).*|\1 0, 0, $omega|" \
       -e "s|^\(    set angular velocity *=\).*|\1 0, 0, -$omega|" \
       -e "s|^\(    set flow rate *=\).*|\1 $flow|" \
+      -e "s|^\(    set reference flow *=\).*|\1 $flow|" \
+      -e "s|^\(    set reference pressure *=\).*|\1 $pref|" \
       -e "s|^\(  set speed of sound *=\).*|\1 $c0|" \
       -e "${DP:+s|^\(  set particle spacing *=\).*|\1 $DP|}" \
       -e "${layers:+s|^\(    set layers *=\).*|\1 $layers|}" "$case_file" > "flute_3d_$v.prm"

@@ -28,6 +28,10 @@
 # Lennard-Jones strips 68.6 N/m and 13.6 kPa (Intel Xeon, native), 73.8 N/m and 13.9 kPa
 # (AMD EPYC, native), 41.9 N/m and 10.6 kPa (AMD EPYC, portable). The force is a train of chip impacts on the barrier, so its
 # mean over 10 ms moves with the trajectory; a lost contact (0) or a reversed one fails.
+# The jam watch (apps/jam_watch.h) must see the jam: the tip's 4 ms mean reaches 4 times
+# the dynamic pressure (measured at 13.6 ms, AMD EPYC, native, 2026-12-05; the chips reach
+# the barrier from about 9 ms); held to 8 ... 28 ms. The fluid's mass balances exactly
+# (inflow = outflow + stored change, residual 0 particles).
 # A barrier the chips slipped through, a contact reaction with the wrong sign or lost, a
 # pressure probe on the wrong side or an outlet that drains the channel fails it.
 #   usage: drill_flute_2d.sh CHIPFLEX
@@ -60,4 +64,22 @@ awk -F, -v barrier=0.02 -v half=0.00025 -v end=0.03 '
 grep '^continuity:' "$dir/out/summary.txt"
 grep -q '^continuity:.*torn=no' "$dir/out/summary.txt" ||
   fail "the channel tore (summary.txt: $(grep '^continuity:' "$dir/out/summary.txt"))"
-echo "ok: the chips stop at the barrier, the channel stays whole"
+grep '^jam:' "$dir/out/summary.txt"
+awk '/^jam:/ { for (i = 1; i <= NF; ++i) if ($i ~ /^time_to_jam_s=/) t = substr($i, 15) }
+     END { if (t == "" || t < 0.008 || t > 0.028) { print "FAIL: no jam at 8 ... 28 ms"; exit 1 } }' \
+  "$dir/out/summary.txt" || exit 1
+# The watch's time to jam, recomputed from probes.csv: the 4 ms running mean of p_tip over
+# the rows from 6 ms on, first at or above 4 x 1740 Pa once it spans 4 ms (at t >= 10 ms).
+awk -F, '
+  NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
+  $1 >= 0.006 { n++; t[n] = $1; p[n] = $col["p_tip_Pa"]
+    if (found == "" && $1 >= 0.01 - 1e-12) { s = 0; c = 0
+      for (k = n; k >= 1 && t[k] > $1 - 0.004; --k) { s += p[k]; c++ }
+      if (s / c >= 4 * 1740) found = $1 } }
+  END { print found }' "$dir/out/probes.csv" > "$dir/recomputed"
+awk -v r="$(cat "$dir/recomputed")" '/^jam:/ { for (i = 1; i <= NF; ++i) if ($i ~ /^time_to_jam_s=/) t = substr($i, 15) }
+     END { if (r == "" || (t - r) > 1e-6 || (r - t) > 1e-6) { printf "FAIL: time to jam %s, from probes.csv %s\n", t, r; exit 1 } }' \
+  "$dir/out/summary.txt" || exit 1
+grep -q '^mass_balance: .* residual_particles=0$' "$dir/out/summary.txt" ||
+  fail "the fluid's mass does not balance: $(grep '^mass_balance:' "$dir/out/summary.txt")"
+echo "ok: the chips stop at the barrier and jam the channel, which stays whole"
