@@ -71,4 +71,10 @@ if command -v h5dump > /dev/null; then
   for v in ${VARIANTS:-rigid flexible}; do
     python3 "$here/flute_picture.py" "$out/$v" "$out/jam_$v.png"
   done
+  # And as a film with its PNG frame series (needs ffmpeg).
+  if command -v ffmpeg > /dev/null; then
+    for v in ${VARIANTS:-rigid flexible}; do
+      sh "$here/flute_video.sh" "$out/$v" "$out/jam_$v.mp4"
+    done
+  fi
 fi
