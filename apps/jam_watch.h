@@ -33,6 +33,9 @@ struct JamWatchSettings
   double reference_start = 0, reference_end = 0; ///< s
   double averaging_time = 0.002;                 ///< s, the running mean's length
   double start_time = 0; ///< s: probe rows before it (the start-up) are not watched
+  /// s: end the run this long after the jam (a study of the time to jam needs no more,
+  /// and a flow-fed channel closed by a jam only compresses further); < 0: run on.
+  double stop_after = -1;
 
   bool enabled() const { return !pressure_gauge.empty() || !flow_gauge.empty(); }
 };
@@ -50,6 +53,11 @@ public:
 
   bool jammed() const { return jam_time_ >= 0; }
   double time_to_jam() const { return jam_time_; }
+  /// True once the run has gone on `stop after` past the jam.
+  bool run_done(double time) const
+  {
+    return jammed() && settings_.stop_after >= 0 && time >= jam_time_ + settings_.stop_after;
+  }
   /// One summary.txt line: the criterion, the references, jammed=yes|no, the time to jam
   /// and the largest pressure ratio / smallest flow ratio the running means reached.
   std::string summary_line() const;

@@ -119,6 +119,10 @@ void declare_probe_keys(ParameterHandler& prm)
   prm.declare_entry("start time", "0", Double(0),
                     "Probe rows before this time (the flow's start-up and its first pressure "
                     "waves) are not watched, s.");
+  prm.declare_entry("stop after", "", Anything(),
+                    "End the run (finished) this long after the jam, s: a study of the time to "
+                    "jam needs no more, and a flow-fed channel that a jam has closed only "
+                    "compresses further. Empty: run to the end time.");
   prm.declare_entry("averaging time", "0.002", Double(0),
                     "The running mean's length, s (several probe intervals; longer than the "
                     "flow's acoustic ringing).");
@@ -149,6 +153,12 @@ JamWatchSettings read_jam_watch_keys(ParameterHandler& prm, const sph::CaseDescr
   };
   given("reference pressure", w.reference_pressure);
   given("reference flow", w.reference_flow);
+  const auto stop = numbers(where + "stop after", prm.get("stop after"));
+  if (stop.size() > 1 || (stop.size() == 1 && !(stop[0] >= 0)))
+    throw InputError(where + "stop after",
+                     "'" + prm.get("stop after") + "': one time >= 0 expected");
+  if (stop.size() == 1)
+    w.stop_after = stop[0];
   const auto window = numbers(where + "reference window", prm.get("reference window"));
   prm.leave_subsection();
   prm.leave_subsection();

@@ -261,6 +261,14 @@ int run_command(const Arguments& args)
         write_checkpoint(checkpoint_path, *sim, cadence, continuity, jam.get());
       }
       progress.update(t, sim->step_count());
+      if (jam && jam->run_done(t))
+      {
+        std::cout << "jam watch: the run ends " << case_file.jam_watch.stop_after
+                  << " s after the jam (probes/jam watch/stop after)" << std::endl;
+        if (t > particles.last_time())
+          particles.write(t, sim->frame());
+        break;
+      }
     }
   }
   catch (const SimulationError& e)

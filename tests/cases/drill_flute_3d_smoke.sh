@@ -46,4 +46,14 @@ awk -F, 'NR > 1 { if ($8 != 0 || $9 != 0) bad = 1 } END { exit bad }' "$dir/rigi
   fail "a rigid chip reports a deflection or strain energy"
 awk -F, 'NR > 1 && $8 > 0 && $9 > 0 { ok = 1 } END { exit !ok }' "$dir/flexible/chip1.csv" ||
   fail "the flexible chip never deflects"
+# The jam watch runs in both (0.5 ms is before it looks: no jam yet) and the mass balances.
+for v in rigid flexible; do
+  grep -q '^jam: p_tip_Pa_reference=2330.8.* jammed=no' "$dir/$v/summary.txt" ||
+    fail "$v: no jam watch line, or a jam at 0.5 ms: $(grep '^jam:' "$dir/$v/summary.txt")"
+  grep -q '^mass_balance: .* residual_particles=0$' "$dir/$v/summary.txt" || fail "$v: the mass does not balance"
+done
+# The film, where ffmpeg is installed (CI has none).
+if command -v ffmpeg > /dev/null && command -v h5dump > /dev/null; then
+  [ -s "$dir/jam_flexible.mp4" ] && [ -s "$dir/jam_flexible_frames/frame_0000.png" ] || fail "no film"
+fi
 echo "ok: both variants ran with every output"
