@@ -37,6 +37,7 @@ JamWatch::JamWatch(const JamWatchSettings& settings, const std::vector<std::stri
     s.rising = true;
     s.threshold = settings.pressure_factor;
     s.reference = settings.reference_pressure;
+    s.measured = std::isnan(s.reference);
     signals_.push_back(s);
   }
   if (!settings.flow_gauge.empty())
@@ -48,6 +49,7 @@ JamWatch::JamWatch(const JamWatchSettings& settings, const std::vector<std::stri
     s.rising = false;
     s.threshold = settings.flow_fraction;
     s.reference = settings.reference_flow;
+    s.measured = std::isnan(s.reference);
     signals_.push_back(s);
   }
   samples_.resize(signals_.size());
@@ -108,17 +110,15 @@ std::string JamWatch::update(double time, const std::vector<double>& row)
       v.erase(v.begin(), v.begin() + long(old));
   }
 
-  // Compare once the mean covers a whole averaging time of rows after the reference.
-  const bool given = signals_.empty() || !std::isnan(settings_.reference_pressure) ||
-                     !std::isnan(settings_.reference_flow);
-  const double ready = std::max(settings_.start_time, given ? 0.0 : settings_.reference_end) +
-                       settings_.averaging_time;
-  if (time < ready * (1 - 1e-12))
-    return log.str();
+  // Each gauge is compared once its mean covers a whole averaging time of rows after the
+  // start-up and, for a measured reference, after the reference window.
   for (std::size_t k = 0; k < signals_.size(); ++k)
   {
     auto& s = signals_[k];
-    if (!(s.reference > 0))
+    const double ready =
+        std::max(settings_.start_time, s.measured ? settings_.reference_end : 0.0) +
+        settings_.averaging_time;
+    if (!(s.reference > 0) || time < ready * (1 - 1e-12))
       continue;
     const double ratio = running_mean(k) / s.reference;
     if (std::isnan(s.extreme_ratio) ||

@@ -73,6 +73,7 @@ private:
     bool rising = true; ///< pressure: jam when the mean rises to factor x reference
     double threshold = 2;
     double reference = std::numeric_limits<double>::quiet_NaN();
+    bool measured = false; ///< the reference is the reference window's mean
     double reference_sum = 0;
     long reference_count = 0;
     std::size_t index = 0;
