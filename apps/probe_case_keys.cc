@@ -143,22 +143,20 @@ JamWatchSettings read_jam_watch_keys(ParameterHandler& prm, const sph::CaseDescr
   w.flow_fraction = prm.get_double("flow fraction");
   w.averaging_time = prm.get_double("averaging time");
   w.start_time = prm.get_double("start time");
-  const auto given = [&](const std::string& key, double& value)
+  // An optional number: empty leaves `value` as it is.
+  const auto optional = [&](const std::string& key, double& value, bool zero_allowed)
   {
     const auto v = numbers(where + key, prm.get(key));
-    if (v.size() > 1 || (v.size() == 1 && !(v[0] > 0)))
-      throw InputError(where + key, "'" + prm.get(key) + "': one positive number expected");
+    if (v.size() > 1 || (v.size() == 1 && !(v[0] > 0 || (zero_allowed && v[0] == 0))))
+      throw InputError(where + key, "'" + prm.get(key) + "': one " +
+                                        (zero_allowed ? "time >= 0" : "positive number") +
+                                        " expected");
     if (v.size() == 1)
       value = v[0];
   };
-  given("reference pressure", w.reference_pressure);
-  given("reference flow", w.reference_flow);
-  const auto stop = numbers(where + "stop after", prm.get("stop after"));
-  if (stop.size() > 1 || (stop.size() == 1 && !(stop[0] >= 0)))
-    throw InputError(where + "stop after",
-                     "'" + prm.get("stop after") + "': one time >= 0 expected");
-  if (stop.size() == 1)
-    w.stop_after = stop[0];
+  optional("reference pressure", w.reference_pressure, false);
+  optional("reference flow", w.reference_flow, false);
+  optional("stop after", w.stop_after, true);
   const auto window = numbers(where + "reference window", prm.get("reference window"));
   prm.leave_subsection();
   prm.leave_subsection();

@@ -177,7 +177,16 @@ int run_command(const Arguments& args)
                 << std::endl;
   }
   ParticleOutput particles(dir);
-  ProbeOutput probes(dir + "/probes.csv", sim->probe_columns());
+  const std::vector<std::string> columns = sim->probe_columns();
+  ProbeOutput probes(dir + "/probes.csv", columns);
+  // The run's watches: the fluid's continuity and, when the case asks, the jam.
+  FluidContinuityCheck continuity(case_file.tear_warning_fraction);
+  const bool open_boundaries = case_file.dimension == 2
+                                   ? !case_file.case_2d.open_boundaries.empty()
+                                   : !case_file.case_3d.open_boundaries.empty();
+  std::unique_ptr<JamWatch> jam;
+  if (case_file.jam_watch.enabled())
+    jam = std::make_unique<JamWatch>(case_file.jam_watch, columns);
   Cadence cadence;
   if (cl.has("--restart"))
   {
@@ -186,6 +195,9 @@ int run_command(const Arguments& args)
     cadence.next_frame = h5.read_double_attribute("/run", "next_frame");
     cadence.next_probe = h5.read_double_attribute("/run", "next_probe");
     cadence.next_checkpoint = next_after(sim->time(), checkpoint_every);
+    continuity.load(h5, "/run");
+    if (jam)
+      jam->load(h5, "/run");
     particles.resume(sim->time());
     probes.resume(sim->time());
     std::cout << "restarted from " << cl.get("--restart") << " at t = " << sim->time()
@@ -201,21 +213,7 @@ int run_command(const Arguments& args)
     cadence.next_probe = next_after(sim->time(), probe_interval);
     cadence.next_checkpoint = next_after(sim->time(), checkpoint_every);
   }
-
-  FluidContinuityCheck continuity(case_file.tear_warning_fraction);
-  const bool open_boundaries = case_file.dimension == 2
-                                   ? !case_file.case_2d.open_boundaries.empty()
-                                   : !case_file.case_3d.open_boundaries.empty();
-  if (cl.has("--restart"))
-    continuity.load(Hdf5File(cl.get("--restart"), Hdf5File::Mode::read), "/run");
   continuity.update(sim->time(), sim->n_fluid_particles());
-  std::unique_ptr<JamWatch> jam;
-  if (case_file.jam_watch.enabled())
-  {
-    jam = std::make_unique<JamWatch>(case_file.jam_watch, sim->probe_columns());
-    if (cl.has("--restart"))
-      jam->load(Hdf5File(cl.get("--restart"), Hdf5File::Mode::read), "/run");
-  }
   ProgressMeter progress(sim->time(), end_time);
   std::size_t lost_reported = sim->n_lost_particles();
   const auto report_lost = [&]

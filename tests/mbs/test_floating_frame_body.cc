@@ -11,6 +11,7 @@
 using namespace chipflex;
 using namespace chipflex::mbs;
 using chipflex::mbs::test::make_truss_beam;
+using chipflex::mbs::test::TrussBeam;
 using chipflex::mbs::test::TrussBeamSpec;
 
 namespace
@@ -77,6 +78,17 @@ void nodal_reference(const FloatingFrameBody<dim>& body, const Eigen::MatrixXd& 
   }
 }
 
+/// A free-free truss beam of `n_cells` cells reduced to `n_modes` modes.
+TrussBeam free_truss_beam(int dim, int n_cells, int n_modes)
+{
+  TrussBeamSpec spec;
+  spec.dim = dim;
+  spec.n_cells = n_cells;
+  spec.n_modes = n_modes;
+  spec.clamped = false;
+  return make_truss_beam(spec);
+}
+
 /// A free body put in motion: at `position` (every coordinate), turned by `angle` (3D:
 /// about `axis`), moving with `velocity` (every coordinate) and a random angular velocity,
 /// with large random modal amplitudes and rates (several mm of deformation, so that the
@@ -112,12 +124,7 @@ template <int dim>
 void check_equations_of_motion(int n_cells, int n_modes)
 {
   using V = Eigen::Matrix<double, dim, 1>;
-  TrussBeamSpec spec;
-  spec.dim = dim;
-  spec.n_cells = n_cells;
-  spec.n_modes = n_modes;
-  spec.clamped = false;
-  const auto beam = make_truss_beam(spec);
+  const auto beam = free_truss_beam(dim, n_cells, n_modes);
   FloatingFrameBody<dim> body(beam.body);
   const int m = body.n_modes();
   std::mt19937 rng(7);
@@ -191,12 +198,7 @@ template <int dim>
 void check_frame_inertia(int n_cells, int n_modes)
 {
   using V = Eigen::Matrix<double, dim, 1>;
-  TrussBeamSpec spec;
-  spec.dim = dim;
-  spec.n_cells = n_cells;
-  spec.n_modes = n_modes;
-  spec.clamped = false;
-  const auto beam = make_truss_beam(spec);
+  const auto beam = free_truss_beam(dim, n_cells, n_modes);
   FloatingFrameBody<dim> body(beam.body);
   const int m = body.n_modes();
   std::mt19937 rng(11);
