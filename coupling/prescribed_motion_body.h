@@ -65,6 +65,7 @@ public:
   const std::vector<std::array<int, dim>>& skin_faces() const override { return faces_; }
   void skin_positions(std::vector<Vector>& x) const override;
   void skin_velocities(std::vector<Vector>& v) const override;
+  bool skin_slides_in_place() const override { return motion_.in_place; }
   void set_skin_forces(const std::vector<Vector>& f) override { forces_ = f; }
 
   double time() const { return time_; }

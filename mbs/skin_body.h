@@ -23,6 +23,10 @@ public:
   /// World positions and velocities of the skin nodes in the current state.
   virtual void skin_positions(std::vector<Vector>& x) const = 0;
   virtual void skin_velocities(std::vector<Vector>& v) const = 0;
+  /// True for a skin that keeps its place while its velocity says it moves: a surface
+  /// that moves along itself (a turning borehole wall). Its velocity is a sliding one,
+  /// tangential to the surface.
+  virtual bool skin_slides_in_place() const { return false; }
   /// External forces on the skin nodes (world frame, N; 2D: N per metre of depth),
   /// held constant until replaced. The body maps them to its generalised forces
   /// (resultant, moment, Psi_skin^T f for the modes).

@@ -244,6 +244,8 @@ private:
   void prescribe_open_boundaries();
   void freeze_open_boundaries();
   void mirror_wall_velocities();
+  void collect_walls_from_fluid();
+  void extrapolate_wall_densities();
   void shift_particles(double dt);
   /// Sides of the boundary particles [first, last) from their faces (thin skins).
   void update_dummy_sides(std::size_t first, std::size_t last);

@@ -175,6 +175,9 @@ void FluidSolver<dim>::force_pass()
   sort_and_bin();
   if (!zones_.empty())
     prescribe_open_boundaries();
+  collect_walls_from_fluid();
+  if (!impl_->walls_from_fluid.empty())
+    extrapolate_wall_densities();
   if (parameters_.no_slip_walls)
     mirror_wall_velocities();
   auto& p = particles_;
@@ -314,6 +317,8 @@ void FluidSolver<dim>::force_pass()
           fail(i, "has a non-finite acceleration (the run blew up)");
   if (!zones_.empty())
     freeze_open_boundaries();
+  for (const std::uint32_t i : im.walls_from_fluid)
+    p.density_rate[i] = 0;
 }
 
 template void FluidSolver<2>::Impl::setup(const FluidParameters<2>&, bool);

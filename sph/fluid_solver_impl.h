@@ -63,6 +63,9 @@ struct FluidSolver<dim>::Impl
   /// Boundary particles beside an open boundary's buffer in this pass: their density is
   /// prescribed like the buffer's (prescribe_open_boundaries) and kept (freeze_...).
   std::vector<std::uint32_t> walls_beside_buffers;
+  /// Boundary particles whose density is taken from the fluid in this pass (walls that
+  /// slide in place; sph/fluid_solver_wall_density.cc).
+  std::vector<std::uint32_t> walls_from_fluid;
   /// Particle shifting (sph/particle_shifting.h), by fluid particle: the last pass's
   /// sums, read by the update right after it.
   std::array<std::vector<float>, dim> shift_sum;

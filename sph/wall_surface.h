@@ -65,6 +65,11 @@ struct WallSurface
   std::vector<std::array<int, dim>> faces;
   /// A permeable barrier: bodies feel it, the fluid does not (coupling/ only).
   bool fluid_passes = false;
+  /// The surface moves along itself and keeps its place (a turning borehole wall): its
+  /// velocities are tangential and its dummy particles stay where they are, so their
+  /// density is taken from the fluid, not from the continuity sum (docs/sph.md, "Walls that
+  /// slide in place").
+  bool slides_in_place = false;
   /// dummy_particles: layers behind the surface (0: enough to cover the kernel support).
   int dummy_layers = 0;
 };
