@@ -24,6 +24,7 @@
 #include "common/hdf5_file.h"
 #include "common/input_error.h"
 
+#include <algorithm>
 #include <deal.II/base/parameter_handler.h>
 #include <filesystem>
 #include <fstream>
@@ -174,6 +175,23 @@ int run_command(const Arguments& args)
       std::cout << "warning: jam watch: the averaging time " << case_file.jam_watch.averaging_time
                 << " s is shorter than the channel's acoustic period 4 L / c0 = " << period
                 << " s; its ringing can pass for a jam (docs/output.md, \"The jam watch\")"
+                << std::endl;
+    // While an inlet ramps up, the flow is below its reference and the acceleration raises
+    // the pressure: both criteria can fire without a jam (a chip-free flute did).
+    auto longest_ramp = [](const auto& zones)
+    {
+      double r = 0;
+      for (const auto& z : zones)
+        if (z.kind == sph::OpenBoundaryKind::inlet)
+          r = std::max(r, z.ramp_time);
+      return r;
+    };
+    const double ramp = case_file.dimension == 2 ? longest_ramp(case_file.case_2d.open_boundaries)
+                                                 : longest_ramp(case_file.case_3d.open_boundaries);
+    if (case_file.jam_watch.enabled() && case_file.jam_watch.start_time < ramp)
+      std::cout << "warning: jam watch: the start time " << case_file.jam_watch.start_time
+                << " s is before the inlet's ramp ends at " << ramp
+                << " s; the ramp's low flow and its acceleration's pressure can pass for a jam"
                 << std::endl;
   }
   ParticleOutput particles(dir);
