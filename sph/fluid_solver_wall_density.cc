@@ -35,16 +35,14 @@ void FluidSolver<dim>::collect_walls_from_fluid()
   auto& p = particles_;
   auto& im = *impl_;
   im.walls_from_fluid.clear();
-  bool any = false;
-  for (const auto& w : walls_)
-    any = any || (w.slides_in_place && w.model == WallModel::dummy_particles);
-  if (!any)
+  auto from_fluid = [](const WallSurface<dim>& w)
+  { return w.slides_in_place && w.model == WallModel::dummy_particles; };
+  if (std::none_of(walls_.begin(), walls_.end(), from_fluid))
     return;
   for (std::size_t i = 0; i < p.n_boundary; ++i)
   {
     const auto& a = im.attachments[p.id[i]];
-    if (a.wall != WallAttachment<dim>::no_wall && walls_[a.wall].slides_in_place &&
-        walls_[a.wall].model == WallModel::dummy_particles)
+    if (a.wall != WallAttachment<dim>::no_wall && from_fluid(walls_[a.wall]))
       im.walls_from_fluid.push_back(std::uint32_t(i));
   }
 }
