@@ -34,20 +34,25 @@ struct HyperelasticPoint
   dealii::SymmetricTensor<4, dim> tangent; ///< dS/dE, Pa
 };
 
-/// The law at deformation gradient F. `compute_tangent` false skips C (residual only).
-/// Throws std::runtime_error for J <= 0 under neo-Hooke (an inverted element: Newton
-/// overshoot, handled by the caller's load-step cut).
+/// The law at the displacement gradient H = grad u (F = I + H). `compute_tangent` false
+/// skips C (residual only). Throws std::runtime_error for J <= 0 under neo-Hooke (an
+/// inverted element: Newton overshoot, handled by the caller's load-step cut).
+///
+/// Everything is formed from H, never as a difference from I: E = (H + H^T + H^T H)/2
+/// rather than (F^T F - I)/2, J - 1 from H's invariants, I - C^-1 = 2 C^-1 E. At a
+/// displacement gradient of 1e-16 (a weightless body under its first, tiny fluid load)
+/// I + H rounds away what H holds, the internal force becomes rounding noise hundreds of
+/// times the load, and Newton cannot reach its relative tolerance.
 template <int dim>
 HyperelasticPoint<dim> evaluate_hyperelastic(HyperelasticModel model, double lambda, double mu,
-                                             const dealii::Tensor<2, dim>& F, bool compute_tangent)
+                                             const dealii::Tensor<2, dim>& H, bool compute_tangent)
 {
   using namespace dealii;
   HyperelasticPoint<dim> p;
-  const SymmetricTensor<2, dim> C = symmetrize(transpose(F) * F);
   const SymmetricTensor<2, dim> I = unit_symmetric_tensor<dim>();
+  const SymmetricTensor<2, dim> E = symmetrize(H) + 0.5 * symmetrize(transpose(H) * H);
   if (model == HyperelasticModel::st_venant_kirchhoff)
   {
-    const SymmetricTensor<2, dim> E = 0.5 * (C - I);
     const double trace_e = trace(E);
     p.energy = 0.5 * lambda * trace_e * trace_e + mu * (E * E);
     p.stress = lambda * trace_e * I + 2 * mu * E;
@@ -55,14 +60,19 @@ HyperelasticPoint<dim> evaluate_hyperelastic(HyperelasticModel model, double lam
       p.tangent = lambda * outer_product(I, I) + 2 * mu * identity_tensor<dim>();
     return p;
   }
-  const double J = determinant(F);
-  if (!(J > 0))
-    throw std::runtime_error("neo-Hooke: inverted element (det F = " + std::to_string(J) + ")");
-  const double log_j = std::log(J);
-  const SymmetricTensor<2, dim> C_inv = invert(C);
-  const double i1 = trace(C) + (3 - dim); // plane strain: C33 = 1
-  p.energy = 0.5 * mu * (i1 - 3) - mu * log_j + 0.5 * lambda * log_j * log_j;
-  p.stress = mu * (I - C_inv) + lambda * log_j * C_inv;
+  // J - 1 = det(I + H) - 1 = tr H + I2(H) (+ det H in 3D), I2 = ((tr H)^2 - tr(H H)) / 2;
+  // in 2D I2 = det H and there is no third term.
+  const double tr_h = trace(H);
+  const double i2 = 0.5 * (tr_h * tr_h - trace(H * H));
+  const double j_minus_1 = tr_h + i2 + (dim == 3 ? determinant(H) : 0.0);
+  if (!(j_minus_1 > -1))
+    throw std::runtime_error("neo-Hooke: inverted element (det F = " +
+                             std::to_string(1 + j_minus_1) + ")");
+  const double log_j = std::log1p(j_minus_1);
+  const SymmetricTensor<2, dim> C_inv = invert(SymmetricTensor<2, dim>(I + 2 * E));
+  // I1 - 3 = tr C - dim = 2 tr E (plane strain: C33 = 1)
+  p.energy = mu * trace(E) - mu * log_j + 0.5 * lambda * log_j * log_j;
+  p.stress = 2 * mu * symmetrize(Tensor<2, dim>(C_inv) * Tensor<2, dim>(E)) + lambda * log_j * C_inv;
   if (compute_tangent)
   {
     // I_{C^-1}_{IJKL} = (Cinv_IK Cinv_JL + Cinv_IL Cinv_JK) / 2

@@ -108,14 +108,15 @@ double NonlinearElasticBody<dim>::assemble(const DofVector& u, DofVector* intern
     for (unsigned int q = 0; q < quadrature.size(); ++q)
     {
       const double jxw = fe_values.JxW(q);
-      Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+      Tensor<2, dim> H; // grad u
       for (unsigned int a = 0; a < n_base; ++a)
       {
         grad[a] = fe_values.shape_grad(system_index[a * dim], q);
         for (unsigned int i = 0; i < dim; ++i)
-          F[i] += u_local[a * dim + i] * grad[a];
+          H[i] += u_local[a * dim + i] * grad[a];
       }
-      const auto point = evaluate_hyperelastic<dim>(model_, lambda_, mu_, F, tangent);
+      const auto point = evaluate_hyperelastic<dim>(model_, lambda_, mu_, H, tangent);
+      const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + H;
       energy += point.energy * jxw;
       const Tensor<2, dim> P = F * Tensor<2, dim>(point.stress); // first Piola-Kirchhoff
       for (unsigned int a = 0; a < n_base; ++a)

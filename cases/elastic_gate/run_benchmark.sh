@@ -8,8 +8,8 @@
 #     DP_MM    fluid particle spacing in mm (default 1; the SPH solid keeps Table 1's 1 mm)
 #     VARIANT  flexible fe chain1 chain2 chain3 sph_solid (default: all; fe is the
 #              full nonlinear FE gate, minutes per run at dp 2 mm), or
-#              flexible_sphinxsys sph_solid_sphinxsys (SPHinXsys' gate material, 7.8 MPa,
-#              nu 0.47, weightless, observer at the downstream lower corner); a variant may
+#              flexible_sphinxsys fe_sphinxsys sph_solid_sphinxsys (SPHinXsys' gate material,
+#              7.8 MPa, nu 0.47, weightless, observer at the downstream lower corner); a variant may
 #              carry modifiers, each ':NAME': ':noweight' / ':weight' (the gate's own weight
 #              off / on), ':gap' (the gate lifted GAP_MM off the floor, the wall above with
 #              it), ':dummy' / ':lj' / ':thin' (the gate's wall model: dummy particles / Lennard-Jones / thin skin),

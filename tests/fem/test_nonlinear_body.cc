@@ -242,3 +242,35 @@ TEST_CASE("small-amplitude free vibration at the linear modal frequency", "[fem]
   CHECK(period == Approx(expected).epsilon(1e-4));
   CHECK(omega == Approx(omega_eb).epsilon(0.005));
 }
+
+TEST_CASE("a load at rounding level: Newton converges to the linear answer", "[fem][nonlinear]")
+{
+  // A weightless body's first load in a coupled run can be 1e-13 N (the fluid barely
+  // touching it): the displacement gradients are then 1e-16 and I + grad u would round
+  // them away. The strain is formed from grad u alone, so the step converges and its
+  // answer is the linear one (u proportional to the load).
+  Beam beam;
+  const auto& b = beam.body.body();
+  for (const auto model : {HyperelasticModel::st_venant_kirchhoff, HyperelasticModel::neo_hooke})
+  {
+    NonlinearElasticBody<2> body(beam.mesh, beam_material(), model, 2, "clamp", MPI_COMM_WORLD);
+    auto zero = b.new_vector(), tiny = b.new_vector(), small = b.new_vector();
+    zero = 0;
+    tiny = b.load_vector(LoadCase::parse("force:tip:1e-13,0", 2, "test"));
+    small = b.load_vector(LoadCase::parse("force:tip:1e-3,0", 2, "test"));
+    // The static answers: at 1e-13 N, 1e-10 times the one at 1e-3 N.
+    const double w_tiny = tip_mean(b, b.to_nodal(body.solve_static(tiny, 1)))[0];
+    const double w_small = tip_mean(b, b.to_nodal(body.solve_static(small, 1)))[0];
+    INFO(hyperelastic_model_name(model) << ": tip " << w_tiny << " m at 1e-13 N, " << w_small
+                                        << " m at 1e-3 N");
+    CHECK(w_tiny / w_small == Approx(1e-10).epsilon(1e-6));
+    // One damped dynamic step from rest under the tiny load (the coupled gate's first step).
+    NonlinearElasticBody<2>::DynamicsOptions options;
+    options.rho_infinity = 0.9;
+    options.rayleigh_stiffness = 3e-5;
+    body.start_dynamics(options, zero, zero, zero);
+    unsigned int iterations = 0;
+    REQUIRE_NOTHROW(iterations = body.step(2e-4, tiny));
+    CHECK(iterations <= 3);
+  }
+}
