@@ -136,3 +136,44 @@ TEST_CASE("particle shifting spreads a disordered fluid towards a lattice", "[sp
   // Without shifting nothing measures it.
   CHECK(std::isinf(plain.reported));
 }
+
+TEST_CASE("a pair pressed together where the fluid stands still is parted", "[sph][shifting]")
+{
+  // A closed, weightless box of water at rest on its lattice, one particle moved to 0.05 dp
+  // from its neighbour: a stagnation point's pair. D = A h |v| dt is zero at rest, so only
+  // the close-pair rule (the design speed c0/10 for a particle whose nearest neighbour is
+  // closer than 0.4 dp) parts them; the pressure force between the two fades as r -> 0.
+  const double dp = 0.01, L = 0.1;
+  FluidParameters<2> f;
+  f.particle_spacing = dp;
+  f.gravity = Eigen::Vector2d::Zero();
+  f.speed_of_sound = 20;
+  f.shifting_coefficient = 2;
+  f.domain_min = Eigen::Vector2d::Constant(-0.1);
+  f.domain_max = Eigen::Vector2d::Constant(L + 0.1);
+  auto fluid = std::make_unique<FluidSolver<2>>(f);
+  TankDescription<2> tank;
+  tank.min = Eigen::Vector2d(0, 0);
+  tank.max = Eigen::Vector2d(L, L);
+  tank.open_top = false;
+  fluid->add_wall(tank_walls(tank));
+  std::vector<Eigen::Vector2d> x;
+  const int n = int(std::lround(L / dp));
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b)
+      x.emplace_back((a + 0.5) * dp, (b + 0.5) * dp);
+  // The particle at (5.5, 5.5) dp moved next to the one at (4.5, 5.5) dp.
+  const std::size_t moved = 5 * n + 5;
+  x[moved] = Eigen::Vector2d(4.55 * dp, 5.5 * dp);
+  fluid->add_fluid_particles(x, {}, {});
+  fluid->initialise();
+  const double start = closest_pair(*fluid) / dp;
+  while (fluid->time() < 0.01)
+    fluid->step();
+  const double end = closest_pair(*fluid) / dp;
+  std::cout << "pair at rest: closest / dp " << start << " at the start, " << end
+            << " after 0.01 s (" << fluid->step_count() << " steps)\n";
+  CHECK(start == Approx(0.05).epsilon(1e-6));
+  CHECK(fluid->lost_particles().empty());
+  CHECK(end > 0.3);
+}
