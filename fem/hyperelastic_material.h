@@ -66,13 +66,14 @@ HyperelasticPoint<dim> evaluate_hyperelastic(HyperelasticModel model, double lam
   const double i2 = 0.5 * (tr_h * tr_h - trace(H * H));
   const double j_minus_1 = tr_h + i2 + (dim == 3 ? determinant(H) : 0.0);
   if (!(j_minus_1 > -1))
-    throw std::runtime_error("neo-Hooke: inverted element (det F = " +
-                             std::to_string(1 + j_minus_1) + ")");
+    throw std::runtime_error(
+        "neo-Hooke: inverted element (det F = " + std::to_string(1 + j_minus_1) + ")");
   const double log_j = std::log1p(j_minus_1);
   const SymmetricTensor<2, dim> C_inv = invert(SymmetricTensor<2, dim>(I + 2 * E));
   // I1 - 3 = tr C - dim = 2 tr E (plane strain: C33 = 1)
   p.energy = mu * trace(E) - mu * log_j + 0.5 * lambda * log_j * log_j;
-  p.stress = 2 * mu * symmetrize(Tensor<2, dim>(C_inv) * Tensor<2, dim>(E)) + lambda * log_j * C_inv;
+  p.stress =
+      2 * mu * symmetrize(Tensor<2, dim>(C_inv) * Tensor<2, dim>(E)) + lambda * log_j * C_inv;
   if (compute_tangent)
   {
     // I_{C^-1}_{IJKL} = (Cinv_IK Cinv_JL + Cinv_IL Cinv_JK) / 2

@@ -261,8 +261,8 @@ TEST_CASE("a load at rounding level: Newton converges to the linear answer", "[f
     // The static answers: at 1e-13 N, 1e-10 times the one at 1e-3 N.
     const double w_tiny = tip_mean(b, b.to_nodal(body.solve_static(tiny, 1)))[0];
     const double w_small = tip_mean(b, b.to_nodal(body.solve_static(small, 1)))[0];
-    INFO(hyperelastic_model_name(model) << ": tip " << w_tiny << " m at 1e-13 N, " << w_small
-                                        << " m at 1e-3 N");
+    INFO(hyperelastic_model_name(model)
+         << ": tip " << w_tiny << " m at 1e-13 N, " << w_small << " m at 1e-3 N");
     CHECK(w_tiny / w_small == Approx(1e-10).epsilon(1e-6));
     // One damped dynamic step from rest under the tiny load (the coupled gate's first step).
     NonlinearElasticBody<2>::DynamicsOptions options;
