@@ -20,17 +20,17 @@ void FluidSolver<dim>::shift_particles(double dt)
   // fluid at rest (a hydrostatic tank) is left exactly as it is.
   const float a_h_dt = float(parameters_.shifting_coefficient * h_ * dt);
   const float cap = float(0.1 * parameters_.particle_spacing);
-  // A particle whose nearest fluid neighbour is closer than 0.4 dp is shifted as if it
+  // A particle whose nearest fluid neighbour is closer than 0.2 dp is shifted as if it
   // moved at least at the design speed c0/10, and also where the free-surface test would
   // leave it: where the flow stands still (a stagnation point) D = A h |v| dt vanishes,
   // and beside a convex wall (the front of the Turek-Hron cylinder, div r = 1.5) the
   // support reads as a free surface; nothing else parts two particles pressed together
   // there (the pressure force between them fades as r -> 0 with the kernel's gradient).
-  // The tensile term, five times its lattice value at 0.3 dp, then pushes the pair apart
-  // within a few steps, and the shift stops once the pair is 0.4 dp apart (at a free
+  // The tensile term, five times its value at dp at 0.2 dp, then pushes the pair apart
+  // within a few steps, and the shift stops once the pair is 0.2 dp apart (at a free
   // surface a particle moves out by about 0.1 dp in all). A lattice (dp apart) never meets
   // the threshold, so a fluid at rest is still left exactly as it is.
-  const float close2 = float(0.16 * parameters_.particle_spacing * parameters_.particle_spacing);
+  const float close2 = float(0.04 * parameters_.particle_spacing * parameters_.particle_spacing);
   const float design_speed = float(0.1 * parameters_.speed_of_sound);
   float closest = 3.4e38f;
   std::size_t closest_at = n;
