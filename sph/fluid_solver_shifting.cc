@@ -3,7 +3,6 @@
 #include "sph/fluid_solver_impl.h"
 #include "sph/particle_shifting.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace chipflex::sph
@@ -20,18 +19,6 @@ void FluidSolver<dim>::shift_particles(double dt)
   // fluid at rest (a hydrostatic tank) is left exactly as it is.
   const float a_h_dt = float(parameters_.shifting_coefficient * h_ * dt);
   const float cap = float(0.1 * parameters_.particle_spacing);
-  // A particle whose nearest fluid neighbour is closer than 0.2 dp is shifted as if it
-  // moved at least at the design speed c0/10, and also where the free-surface test would
-  // leave it: where the flow stands still (a stagnation point) D = A h |v| dt vanishes,
-  // and beside a convex wall (the front of the Turek-Hron cylinder, div r = 1.5) the
-  // support reads as a free surface; nothing else parts two particles pressed together
-  // there (the pressure force between them fades as r -> 0 with the kernel's gradient).
-  // The tensile term, five times its value at dp at 0.2 dp, then pushes the pair apart
-  // within a few steps, and the shift stops once the pair is 0.2 dp apart (at a free
-  // surface a particle moves out by about 0.1 dp in all). A lattice (dp apart) never meets
-  // the threshold, so a fluid at rest is still left exactly as it is.
-  const float close2 = float(0.04 * parameters_.particle_spacing * parameters_.particle_spacing);
-  const float design_speed = float(0.1 * parameters_.speed_of_sound);
   float closest = 3.4e38f;
   std::size_t closest_at = n;
   for (std::size_t i = nb; i < n; ++i)
@@ -58,11 +45,7 @@ void FluidSolver<dim>::shift_particles(double dt)
     float v2 = 0;
     for (int d = 0; d < dim; ++d)
       v2 += p.velocity[d][i] * p.velocity[d][i];
-    const float speed = std::sqrt(v2);
-    const bool close = im.closest[k] < close2;
-    const float shifting_speed = close ? std::max(speed, design_speed) : speed;
-    const float divergence = close ? float(dim) : im.position_divergence[k];
-    particle_shift<dim>(sum, divergence, a_h_dt * shifting_speed, cap, dr);
+    particle_shift<dim>(sum, im.position_divergence[k], a_h_dt * std::sqrt(v2), cap, dr);
     for (int d = 0; d < dim; ++d)
       p.position[d][i] += dr[d];
   }
