@@ -249,11 +249,11 @@ TEST_CASE("a load at rounding level: Newton converges to the linear answer", "[f
   // touching it): the displacement gradients are then 1e-16 and I + grad u would round
   // them away. The strain is formed from grad u alone, so the step converges and its
   // answer is the linear one (u proportional to the load).
-  Beam beam;
-  const auto& b = beam.body.body();
+  const Beam beam; // its mesh
   for (const auto model : {HyperelasticModel::st_venant_kirchhoff, HyperelasticModel::neo_hooke})
   {
     NonlinearElasticBody<2> body(beam.mesh, beam_material(), model, 2, "clamp", MPI_COMM_WORLD);
+    const auto& b = body.body();
     auto zero = b.new_vector(), tiny = b.new_vector(), small = b.new_vector();
     zero = 0;
     tiny = b.load_vector(LoadCase::parse("force:tip:1e-13,0", 2, "test"));
