@@ -6,6 +6,7 @@
 #include "common/input_error.h"
 #include "sph/dummy_wall_particles.h"
 #include "sph/fluid_solver_impl.h"
+#include "sph/particle_exchange.h"
 #include "sph/thin_skins.h"
 
 #include <cmath>
@@ -214,6 +215,31 @@ void FluidSolver<dim>::finish_setup()
   staged_fluid_rho_ = {};
   staged_boundary_rho_ = {};
   impl_->setup(parameters_, has_thin_skins());
+  if (exchange_)
+  {
+    if (!zones_.empty() || has_thin_skins() || parameters_.scheme == TimeScheme::position_verlet)
+      throw InputError("mpi", "open boundaries, thin skins and the position-Verlet scheme do "
+                              "not run over MPI yet; run one process with threads");
+    exchange_->initialise(p, parameters_.domain_min, parameters_.domain_max,
+                          impl_->grid.cell_size());
+  }
+}
+
+template <int dim>
+void FluidSolver<dim>::distribute(std::shared_ptr<ParticleExchange<dim>> exchange)
+{
+  if (set_up_)
+    throw std::logic_error("FluidSolver::distribute after the set-up");
+  exchange_ = std::move(exchange);
+}
+
+template <int dim>
+std::size_t FluidSolver<dim>::n_ghosts() const
+{
+  std::size_t n = 0;
+  for (std::size_t i = particles_.n_boundary; i < particles_.size(); ++i)
+    n += particles_.is_ghost(i);
+  return n;
 }
 
 template <int dim>
@@ -377,6 +403,11 @@ void FluidSolver<dim>::remove_lost_particles()
                                        p.density[i] <= parameters_.maximum_density_ratio * rho0);
     if (finite && !outside && density_ok)
       continue;
+    if (p.is_ghost(i)) // its owner has the particle, and counts it if it is lost
+    {
+      gone.push_back(i);
+      continue;
+    }
     if (i < nb) // a wall particle: the walls' motion is wrong, not one splash
       fail(i, finite ? "left the domain box" : "has a non-finite state (the run blew up)");
     LostParticle<dim> lost;
@@ -433,6 +464,8 @@ double FluidSolver<dim>::step()
   run_hooks(HookPoint::before_forces);
   if (!zones_.empty())
     transfer_open_boundaries();
+  if (exchange_)
+    exchange_->exchange(particles_);
   // position_verlet reuses the previous step's mid-step pass for the predictor (and dt);
   // only the first step (no pass yet) evaluates the forces at t_n.
   if (parameters_.scheme != TimeScheme::position_verlet || !forces_current_)
@@ -451,6 +484,8 @@ double FluidSolver<dim>::step()
   {
     predict_symplectic(dt);
     force_time_ = time_ + 0.5 * dt; // the mid-step state
+    if (exchange_)
+      exchange_->refresh_ghosts(particles_);
     force_pass();
     correct_symplectic(dt);
   }

@@ -49,6 +49,12 @@
 // the integrators move them with their prescribed velocity. Outflow is counted per zone,
 // apart from the lost particles (it does not count toward maximum_lost_fraction).
 //
+// MPI (sph/particle_exchange.h): distribute(exchange) before the first step spreads the
+// fluid over the ranks in slabs; each rank then holds its own fluid particles and, as
+// ghosts, the others' within reach (n_ghosts()); the walls stay whole on every rank. The
+// time step is the global one. Not yet over MPI: open boundaries, thin skins, the
+// position-Verlet scheme, checkpoints; bodies (their wall forces would need a sum).
+//
 // Failure: more than maximum_lost_fraction of the fluid lost, a boundary particle
 // leaving the domain box, a non-finite acceleration or dt below minimum_time_step
 // throws SimulationError naming the step, time and particle.
@@ -72,6 +78,9 @@ class Hdf5File;
 
 namespace chipflex::sph
 {
+template <int dim>
+class ParticleExchange;
+
 enum class ParticleKind
 {
   boundary = 0,
@@ -134,6 +143,11 @@ public:
   /// An inlet or outlet buffer zone (sph/open_boundary.h). The fluid particles inside
   /// its box at set-up are its buffer: fill it with the fluid's lattice.
   void add_open_boundary(const OpenBoundary<dim>& zone);
+  /// Spreads the fluid over MPI ranks (every rank builds the same case and calls this
+  /// before the first step); see the header comment for what it covers.
+  void distribute(std::shared_ptr<ParticleExchange<dim>> exchange);
+  /// The rank layer, or null for a one-process run.
+  const ParticleExchange<dim>* exchange() const { return exchange_.get(); }
   /// Ends the set-up: builds the particle arrays (boundary block first). Called by the
   /// first step(), save() or load(); call it yourself before reading particles of a
   /// solver that has not stepped yet. Idempotent.
@@ -165,6 +179,8 @@ public:
   std::size_t n_particles() const { return particles_.size(); }
   std::size_t n_boundary() const { return particles_.n_boundary; }
   std::size_t n_fluid() const { return particles_.n_fluid(); }
+  /// Over MPI: the other ranks' fluid particles held here as ghosts (part of n_fluid()).
+  std::size_t n_ghosts() const;
   const ParticleArrays<dim>& particles() const { return particles_; }
   /// Mutable access for hooks (e.g. an external body force added to the accelerations
   /// in an after_forces hook). Do not reorder or resize.
@@ -281,6 +297,7 @@ private:
   double closest_pair_ = std::numeric_limits<double>::infinity(), closest_pair_time_ = 0;
   Vector closest_pair_position_ = Vector::Zero();
 
+  std::shared_ptr<ParticleExchange<dim>> exchange_;
   struct Impl;
   std::unique_ptr<Impl> impl_;
   // Staging before finish_setup().

@@ -44,6 +44,8 @@ template <int dim>
 void FluidSolver<dim>::save(Hdf5File& file, const std::string& group) const
 {
   const_cast<FluidSolver*>(this)->finish_setup();
+  if (exchange_)
+    throw InputError("mpi", "checkpoints do not run over MPI yet");
   const auto& p = particles_;
   const std::size_t n = p.size();
   file.ensure_group(group);
@@ -147,6 +149,8 @@ template <int dim>
 void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
 {
   finish_setup();
+  if (exchange_)
+    throw InputError("mpi", "checkpoints do not run over MPI yet");
   auto& p = particles_;
   const std::string where = file.path() + ":" + group;
   if (file.read_integer_attribute(group, "dim") != dim)

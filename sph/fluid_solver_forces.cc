@@ -2,6 +2,7 @@
 // walls, gravity), with the pair policies chosen once at set-up.
 
 #include "sph/fluid_solver_impl.h"
+#include "sph/particle_exchange.h"
 
 #include <cmath>
 #include <sstream>
@@ -276,6 +277,8 @@ void FluidSolver<dim>::force_pass()
   for (int d = 0; d < dim; ++d)
     g[d] = float(parameters_.gravity[d]);
   float a2_max = 0, v2_max = 0;
+  // Over MPI a ghost's own sums miss the neighbours beyond this rank's halo.
+  const std::uint32_t* halo = p.halo.empty() ? nullptr : p.halo.data();
 #pragma omp parallel for schedule(static)                                                          \
     reduction(max                                                                                  \
               : a2_max, v2_max) if (n > light_parallel_threshold)
@@ -289,7 +292,8 @@ void FluidSolver<dim>::force_pass()
       a2 += a * a;
       v2 += p.velocity[d][i] * p.velocity[d][i];
     }
-    a2_max = std::max(a2_max, a2);
+    const bool own = !halo || halo[i] < ParticleArrays<dim>::ghost_flag;
+    a2_max = std::max(a2_max, own ? a2 : 0.0f);
     v2_max = std::max(v2_max, v2);
   }
   acceleration_max_ = std::sqrt(double(a2_max));
@@ -315,6 +319,13 @@ void FluidSolver<dim>::force_pass()
       for (int d = 0; d < dim; ++d)
         if (!std::isfinite(p.acceleration[d][i]))
           fail(i, "has a non-finite acceleration (the run blew up)");
+  if (exchange_) // the time step is the global one
+  {
+    double maxima[2] = {acceleration_max_, double(dot_rr2_max_)};
+    exchange_->maximum(maxima, 2);
+    acceleration_max_ = maxima[0];
+    dot_rr2_max_ = float(maxima[1]);
+  }
   if (!zones_.empty())
     freeze_open_boundaries();
   for (const std::uint32_t i : im.walls_from_fluid)

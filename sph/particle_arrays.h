@@ -55,6 +55,12 @@ struct ParticleArrays
   /// interact.
   std::array<std::vector<float>, dim> side;
   std::vector<float> skin;
+  /// Runs over MPI only (empty otherwise; sph/particle_exchange.h): 0 for an owned
+  /// particle that no other rank sees, k + 1 for an owned particle sent as the k-th ghost
+  /// entry of this step, ghost_flag + j for a ghost (a copy of another rank's particle,
+  /// the j-th received this step), whose state is refreshed before every force pass and
+  /// whose own results are not used.
+  std::vector<std::uint32_t> halo;
 
   // Results of the last force pass (not permuted: recomputed after every sort).
   std::array<std::vector<float>, dim> acceleration; ///< boundary: reaction force / mass
@@ -67,8 +73,11 @@ struct ParticleArrays
   std::size_t size() const { return density.size(); }
   std::size_t n_fluid() const { return size() - n_boundary; }
 
+  static constexpr std::uint32_t ghost_flag = 0x80000000u;
+  bool is_ghost(std::size_t i) const { return !halo.empty() && halo[i] >= ghost_flag; }
+
   void resize(std::size_t n, bool with_previous_positions, bool with_zones = false,
-              bool with_sides = false)
+              bool with_sides = false, bool with_halo = false)
   {
     for (int d = 0; d < dim; ++d)
     {
@@ -85,6 +94,7 @@ struct ParticleArrays
     id.resize(n);
     fill.resize(n, 1.0f);
     zone.resize(with_zones ? n : 0);
+    halo.resize(with_halo ? n : 0);
     density_rate.resize(n);
     pressure_term.resize(n);
     volume.resize(n);
@@ -115,6 +125,8 @@ struct ParticleArrays
     apply(fill, first, permutation, scratch);
     if (!zone.empty())
       apply(zone, first, permutation, scratch);
+    if (!halo.empty())
+      apply(halo, first, permutation, scratch);
     apply(cell, first, permutation, scratch);
   }
 
@@ -141,6 +153,8 @@ struct ParticleArrays
     fill.push_back(1.0f);
     if (!zone.empty())
       zone.push_back(new_zone);
+    if (!halo.empty())
+      halo.push_back(0);
     density_rate.push_back(0.0f);
     pressure_term.push_back(0.0f);
     volume.push_back(0.0f);
@@ -168,6 +182,7 @@ struct ParticleArrays
     erase(id, sorted_indices);
     erase(fill, sorted_indices);
     erase(zone, sorted_indices);
+    erase(halo, sorted_indices);
     erase(density_rate, sorted_indices);
     erase(pressure_term, sorted_indices);
     erase(volume, sorted_indices);
@@ -181,7 +196,8 @@ struct ParticleArrays
       b += bytes(position[d]) + bytes(velocity[d]) + bytes(velocity_previous[d]) +
            bytes(position_previous[d]) + bytes(acceleration[d]) + bytes(side[d]);
     return b + bytes(density) + bytes(density_previous) + bytes(id) + bytes(fill) + bytes(zone) +
-           bytes(skin) + bytes(density_rate) + bytes(pressure_term) + bytes(volume) + bytes(cell);
+           bytes(halo) + bytes(skin) + bytes(density_rate) + bytes(pressure_term) + bytes(volume) +
+           bytes(cell);
   }
 
 private:

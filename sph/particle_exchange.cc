@@ -1,0 +1,366 @@
+// ParticleExchange: migration and ghosts of the fluid over MPI ranks, with plain MPI
+// collectives (MPI_Alltoallv): a slab has at most two neighbours, but the collective also
+// serves empty slabs, slabs thinner than the halo and the set-up without special cases.
+
+#include "sph/particle_exchange.h"
+
+#include <chrono>
+#include <cstdlib>
+#include <limits>
+#include <mpi.h>
+#include <stdexcept>
+#include <string>
+
+namespace chipflex::sph
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0)
+{
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// A migrating particle: id, x, v, v_previous, rho, rho_previous, fill.
+template <int dim>
+constexpr int migrant_size = 4 + 3 * dim;
+/// A ghost: id, x, v, rho, fill.
+template <int dim>
+constexpr int ghost_size = 3 + 2 * dim;
+
+template <int dim>
+void pack_ghost(const ParticleArrays<dim>& p, std::size_t i, double* out)
+{
+  out[0] = double(p.id[i]);
+  for (int d = 0; d < dim; ++d)
+  {
+    out[1 + d] = p.position[d][i];
+    out[1 + dim + d] = double(p.velocity[d][i]);
+  }
+  out[1 + 2 * dim] = double(p.density[i]);
+  out[2 + 2 * dim] = double(p.fill[i]);
+}
+
+template <int dim>
+void unpack_ghost(const double* in, ParticleArrays<dim>& p, std::size_t i)
+{
+  for (int d = 0; d < dim; ++d)
+  {
+    p.position[d][i] = in[1 + d];
+    p.velocity[d][i] = p.velocity_previous[d][i] = float(in[1 + dim + d]);
+  }
+  p.density[i] = p.density_previous[i] = float(in[1 + 2 * dim]);
+  p.fill[i] = float(in[2 + 2 * dim]);
+}
+
+/// Appends a fluid particle with the state of a migrant (or ghost) record.
+template <int dim>
+void append_record(const double* in, bool migrant, std::uint32_t halo, ParticleArrays<dim>& p)
+{
+  double x[dim];
+  float v[dim];
+  for (int d = 0; d < dim; ++d)
+  {
+    x[d] = in[1 + d];
+    v[d] = float(in[1 + dim + d]);
+  }
+  const int rho_at = migrant ? 1 + 3 * dim : 1 + 2 * dim;
+  p.append(x, v, float(in[rho_at]), std::uint32_t(in[0]), 0);
+  const std::size_t i = p.size() - 1;
+  if (migrant)
+    for (int d = 0; d < dim; ++d)
+      p.velocity_previous[d][i] = float(in[1 + 2 * dim + d]);
+  p.density_previous[i] = float(in[migrant ? rho_at + 1 : rho_at]);
+  p.fill[i] = float(in[rho_at + (migrant ? 2 : 1)]);
+  p.halo[i] = halo;
+}
+} // namespace
+
+bool launched_on_several_ranks()
+{
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS"})
+    if (const char* value = std::getenv(name))
+      if (std::atoi(value) > 1)
+        return true;
+  return false;
+}
+
+MpiSession::MpiSession()
+{
+  int initialised = 0;
+  MPI_Initialized(&initialised);
+  if (!initialised)
+  {
+    int provided = 0;
+    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+    started_ = true;
+  }
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &n_ranks_);
+}
+
+MpiSession::~MpiSession()
+{
+  int finalised = 0;
+  MPI_Finalized(&finalised);
+  if (started_ && !finalised)
+    MPI_Finalize();
+}
+
+template <int dim>
+ParticleExchange<dim>::ParticleExchange()
+{
+  int initialised = 0;
+  MPI_Initialized(&initialised);
+  if (!initialised)
+    throw std::logic_error("ParticleExchange: MPI is not initialised (MpiSession)");
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &n_ranks_);
+}
+
+template <int dim>
+void ParticleExchange<dim>::initialise(ParticleArrays<dim>& p, const Vector& domain_min,
+                                       const Vector& domain_max, double cell_size)
+{
+  int axis = 0;
+  for (int d = 1; d < dim; ++d)
+    if (domain_max[d] - domain_min[d] > domain_max[axis] - domain_min[axis])
+      axis = d;
+  origin_ = domain_min[axis];
+  layer_width_ = cell_size;
+  n_layers_ = std::size_t(std::ceil((domain_max[axis] - domain_min[axis]) / cell_size));
+  n_layers_ = std::max<std::size_t>(n_layers_, 1);
+  // Every rank holds the whole fluid here: its own histogram is the global one.
+  std::vector<std::uint64_t> per_layer(n_layers_, 0);
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+  {
+    const double s = (p.position[axis][i] - origin_) / layer_width_;
+    per_layer[std::size_t(std::clamp(s, 0.0, double(n_layers_ - 1)))] += 1;
+  }
+  slabs_ = SlabDecomposition(
+      axis, SlabDecomposition::balanced_cuts(per_layer, origin_, layer_width_, n_ranks_),
+      2 * cell_size);
+  p.halo.assign(p.size(), 0);
+  std::vector<std::size_t> others;
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+  {
+    double x[dim];
+    for (int d = 0; d < dim; ++d)
+      x[d] = p.position[d][i];
+    const int owner = slabs_.owner(x);
+    if (owner >= 0 && owner != rank_)
+      others.push_back(i);
+  }
+  p.remove(others);
+}
+
+template <int dim>
+std::vector<double> ParticleExchange<dim>::all_to_all(const std::vector<std::vector<double>>& send,
+                                                      std::vector<int>* received_counts) const
+{
+  std::vector<int> send_count(n_ranks_), send_offset(n_ranks_), receive_count(n_ranks_),
+      receive_offset(n_ranks_);
+  std::vector<double> flat;
+  for (int r = 0; r < n_ranks_; ++r)
+  {
+    send_count[r] = int(send[r].size());
+    send_offset[r] = int(flat.size());
+    flat.insert(flat.end(), send[r].begin(), send[r].end());
+  }
+  MPI_Alltoall(send_count.data(), 1, MPI_INT, receive_count.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  int total = 0;
+  for (int r = 0; r < n_ranks_; ++r)
+  {
+    receive_offset[r] = total;
+    total += receive_count[r];
+  }
+  std::vector<double> received(std::size_t(total) + 1); // +1: never a null buffer
+  flat.push_back(0.0);
+  MPI_Alltoallv(flat.data(), send_count.data(), send_offset.data(), MPI_DOUBLE, received.data(),
+                receive_count.data(), receive_offset.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  received.pop_back();
+  if (received_counts)
+    *received_counts = receive_count;
+  return received;
+}
+
+template <int dim>
+std::vector<std::uint64_t>
+ParticleExchange<dim>::global_histogram(const ParticleArrays<dim>& p) const
+{
+  const int axis = slabs_.axis();
+  std::vector<std::uint64_t> per_layer(n_layers_, 0);
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+  {
+    const double s = (p.position[axis][i] - origin_) / layer_width_;
+    if (!p.is_ghost(i) && std::isfinite(s))
+      per_layer[std::size_t(std::clamp(s, 0.0, double(n_layers_ - 1)))] += 1;
+  }
+  MPI_Allreduce(MPI_IN_PLACE, per_layer.data(), int(n_layers_), MPI_UINT64_T, MPI_SUM,
+                MPI_COMM_WORLD);
+  return per_layer;
+}
+
+template <int dim>
+void ParticleExchange<dim>::rebalance(const ParticleArrays<dim>& p)
+{
+  const auto per_layer = global_histogram(p);
+  const auto load = slabs_.loads(per_layer, origin_, layer_width_);
+  std::uint64_t total = 0, busiest = 0;
+  for (const auto l : load)
+    total += l, busiest = std::max(busiest, l);
+  // Every rank sees the same histogram, so all take the same decision.
+  if (double(busiest) * n_ranks_ <= 1.05 * double(total))
+    return;
+  slabs_ = SlabDecomposition(
+      slabs_.axis(), SlabDecomposition::balanced_cuts(per_layer, origin_, layer_width_, n_ranks_),
+      slabs_.halo_width());
+  ++statistics_.rebalances;
+}
+
+template <int dim>
+void ParticleExchange<dim>::migrate(ParticleArrays<dim>& p)
+{
+  constexpr int size = migrant_size<dim>;
+  std::vector<std::vector<double>> send(n_ranks_);
+  std::vector<std::size_t> leaving;
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+  {
+    double x[dim];
+    for (int d = 0; d < dim; ++d)
+      x[d] = p.position[d][i];
+    const int owner = slabs_.owner(x);
+    if (owner < 0 || owner == rank_)
+      continue;
+    double record[size];
+    record[0] = double(p.id[i]);
+    for (int d = 0; d < dim; ++d)
+    {
+      record[1 + d] = x[d];
+      record[1 + dim + d] = double(p.velocity[d][i]);
+      record[1 + 2 * dim + d] = double(p.velocity_previous[d][i]);
+    }
+    record[1 + 3 * dim] = double(p.density[i]);
+    record[2 + 3 * dim] = double(p.density_previous[i]);
+    record[3 + 3 * dim] = double(p.fill[i]);
+    send[owner].insert(send[owner].end(), record, record + size);
+    leaving.push_back(i);
+  }
+  const std::vector<double> arriving = all_to_all(send);
+  p.remove(leaving);
+  for (std::size_t k = 0; k < arriving.size(); k += size)
+    append_record<dim>(&arriving[k], true, 0, p);
+  statistics_.migrated += arriving.size() / size;
+}
+
+template <int dim>
+void ParticleExchange<dim>::build_ghosts(ParticleArrays<dim>& p)
+{
+  constexpr int size = ghost_size<dim>;
+  std::vector<std::vector<double>> send(n_ranks_);
+  entry_first_.assign(1, 0);
+  entry_rank_.clear();
+  entry_slot_.clear();
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+  {
+    double x[dim];
+    for (int d = 0; d < dim; ++d)
+      x[d] = p.position[d][i];
+    slabs_.for_each_ghost_rank(x, rank_,
+                               [&](int r)
+                               {
+                                 entry_rank_.push_back(r);
+                                 entry_slot_.push_back(std::uint32_t(send[r].size() / size));
+                                 send[r].resize(send[r].size() + size);
+                                 pack_ghost(p, i, &send[r][send[r].size() - size]);
+                               });
+    if (entry_rank_.size() > entry_first_.back())
+    {
+      p.halo[i] = std::uint32_t(entry_first_.size()); // entry k + 1
+      entry_first_.push_back(std::uint32_t(entry_rank_.size()));
+    }
+  }
+  send_counts_.assign(n_ranks_, 0);
+  for (int r = 0; r < n_ranks_; ++r)
+    send_counts_[r] = int(send[r].size() / size);
+  const std::vector<double> received = all_to_all(send);
+  n_ghosts_ = received.size() / size;
+  for (std::size_t j = 0; j < n_ghosts_; ++j)
+    append_record<dim>(&received[j * size], false,
+                       ParticleArrays<dim>::ghost_flag + std::uint32_t(j), p);
+  statistics_.ghosts += n_ghosts_;
+}
+
+template <int dim>
+void ParticleExchange<dim>::exchange(ParticleArrays<dim>& p)
+{
+  const auto t0 = Clock::now();
+  std::vector<std::size_t> ghosts;
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+  {
+    if (p.is_ghost(i))
+      ghosts.push_back(i);
+    else
+      p.halo[i] = 0;
+  }
+  p.remove(ghosts);
+  migrate(p);
+  if (++calls_ % std::uint64_t(std::max(rebalance_every, 1)) == 0)
+  {
+    const auto before = statistics_.rebalances;
+    rebalance(p);
+    if (statistics_.rebalances != before)
+      migrate(p);
+  }
+  const auto t1 = Clock::now();
+  statistics_.migration_seconds += std::chrono::duration<double>(t1 - t0).count();
+  build_ghosts(p);
+  statistics_.halo_seconds += seconds_since(t1);
+}
+
+template <int dim>
+void ParticleExchange<dim>::refresh_ghosts(ParticleArrays<dim>& p)
+{
+  const auto t0 = Clock::now();
+  constexpr int size = ghost_size<dim>;
+  // A slot whose particle was removed since (lost) stays NaN: its ghost is dropped at the
+  // next sort without being counted as lost here.
+  std::vector<std::vector<double>> send(n_ranks_);
+  for (int r = 0; r < n_ranks_; ++r)
+    send[r].assign(std::size_t(send_counts_[r]) * size, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+  {
+    const std::uint32_t h = p.halo[i];
+    if (h == 0 || h >= ParticleArrays<dim>::ghost_flag)
+      continue;
+    for (std::uint32_t e = entry_first_[h - 1]; e < entry_first_[h]; ++e)
+      pack_ghost(p, i, &send[entry_rank_[e]][std::size_t(entry_slot_[e]) * size]);
+  }
+  const std::vector<double> received = all_to_all(send);
+  if (received.size() != n_ghosts_ * size)
+    throw std::logic_error("ParticleExchange: the ghosts changed within a step");
+  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+    if (p.is_ghost(i))
+      unpack_ghost(&received[std::size_t(p.halo[i] - ParticleArrays<dim>::ghost_flag) * size], p,
+                   i);
+  statistics_.halo_seconds += seconds_since(t0);
+}
+
+template <int dim>
+void ParticleExchange<dim>::maximum(double* values, int n)
+{
+  const auto t0 = Clock::now();
+  MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  statistics_.reduction_seconds += seconds_since(t0);
+}
+
+template <int dim>
+void ParticleExchange<dim>::sum(double* values, int n) const
+{
+  MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+}
+
+template class ParticleExchange<2>;
+template class ParticleExchange<3>;
+} // namespace chipflex::sph

@@ -1,0 +1,120 @@
+#pragma once
+// ParticleExchange<dim>: the fluid spread over MPI ranks (sph/slab_decomposition.h).
+//
+// Every rank builds the whole case (the set-up is cheap next to the run) and then keeps
+// the fluid particles of its own slab; the wall (boundary) particles stay on every rank.
+// Each step:
+//   exchange()        at the step start: drops last step's ghosts, sends the particles
+//                     that left the slab to their new owner (migration), rebalances the
+//                     cuts now and then, and receives as ghosts the other ranks'
+//                     particles within the halo width of the slab;
+//   refresh_ghosts()  before a later force pass of the same step (the symplectic
+//                     corrector): the owners send the ghosts' new states;
+//   maximum()         the time step's maxima over all ranks.
+// A ghost is a fluid particle flagged in ParticleArrays::halo: it takes part in the force
+// pass as a neighbour, and its own results are not used.
+//
+// Determinism: each rank's arrays, and so its answers, depend only on the number of
+// ranks; runs on different numbers of ranks sum the same pairs in another order and agree
+// to rounding, which a dam break's splash then amplifies (docs/parallel.md).
+//
+// mpi.h stays in the .cc: the communicator is MPI_COMM_WORLD.
+
+#include "sph/particle_arrays.h"
+#include "sph/slab_decomposition.h"
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+namespace chipflex::sph
+{
+/// Whether this process was started by mpirun (or srun) with more than one rank; read
+/// from the launcher's environment, so it works before MPI_Init.
+bool launched_on_several_ranks();
+
+/// MPI_Init_thread (funneled: only the thread that steps calls MPI) unless MPI is up
+/// already; MPI_Finalize at the end of the scope if this object started it.
+class MpiSession
+{
+public:
+  MpiSession();
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+  int rank() const { return rank_; }
+  int n_ranks() const { return n_ranks_; }
+
+private:
+  bool started_ = false;
+  int rank_ = 0, n_ranks_ = 1;
+};
+
+/// Time spent in the exchange and its traffic, accumulated over the run (this rank).
+struct ExchangeStatistics
+{
+  double migration_seconds = 0; ///< sending the particles that changed rank
+  double halo_seconds = 0;      ///< building and refreshing the ghosts
+  double reduction_seconds = 0; ///< the time step's global maxima
+  std::uint64_t migrated = 0;   ///< particles received from other ranks
+  std::uint64_t ghosts = 0;     ///< ghosts received, summed over the steps
+  std::uint64_t rebalances = 0; ///< times the cuts moved
+};
+
+template <int dim>
+class ParticleExchange
+{
+public:
+  using Vector = Eigen::Matrix<double, dim, 1>;
+
+  /// Needs MPI to be initialised (MpiSession).
+  ParticleExchange();
+
+  int rank() const { return rank_; }
+  int n_ranks() const { return n_ranks_; }
+  const SlabDecomposition& decomposition() const { return slabs_; }
+  const ExchangeStatistics& statistics() const { return statistics_; }
+
+  /// Set-up: `p` holds every fluid particle of the case on every rank. Cuts the slabs
+  /// along the longest axis of the domain box, on the neighbour grid's layers of width
+  /// `cell_size`, and keeps this rank's own fluid particles.
+  void initialise(ParticleArrays<dim>& p, const Vector& domain_min, const Vector& domain_max,
+                  double cell_size);
+  /// Step start: ghosts out, migration, rebalancing (every `rebalance_every` calls, when
+  /// the busiest rank holds more than 5 % above the mean), ghosts in.
+  void exchange(ParticleArrays<dim>& p);
+  /// The owners' current states into this step's ghosts.
+  void refresh_ghosts(ParticleArrays<dim>& p);
+  /// In place: each value becomes its maximum over the ranks.
+  void maximum(double* values, int n);
+  /// In place: each value becomes its sum over the ranks.
+  void sum(double* values, int n) const;
+  std::size_t n_ghosts() const { return n_ghosts_; }
+
+  int rebalance_every = 100;
+
+private:
+  /// Particle counts per cell layer along the axis, summed over the ranks.
+  std::vector<std::uint64_t> global_histogram(const ParticleArrays<dim>& p) const;
+  void rebalance(const ParticleArrays<dim>& p);
+  void migrate(ParticleArrays<dim>& p);
+  void build_ghosts(ParticleArrays<dim>& p);
+  /// Sends send[r] to rank r and returns what every rank sent here, in rank order.
+  std::vector<double> all_to_all(const std::vector<std::vector<double>>& send,
+                                 std::vector<int>* received_counts = nullptr) const;
+
+  int rank_ = 0, n_ranks_ = 1;
+  SlabDecomposition slabs_;
+  double origin_ = 0, layer_width_ = 1;
+  std::size_t n_layers_ = 1;
+  std::uint64_t calls_ = 0;
+  /// This step's ghost entries: owned entry k went to rank entry_rank_[...] at record
+  /// slot entry_slot_[...], over [entry_first_[k], entry_first_[k + 1]).
+  std::vector<std::uint32_t> entry_first_;
+  std::vector<int> entry_rank_;
+  std::vector<std::uint32_t> entry_slot_;
+  std::vector<int> send_counts_; ///< ghost records per destination rank
+  std::size_t n_ghosts_ = 0;
+  ExchangeStatistics statistics_;
+};
+} // namespace chipflex::sph
