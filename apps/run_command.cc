@@ -14,6 +14,7 @@
 #include "apps/case_file.h"
 #include "apps/channel_acoustics.h"
 #include "apps/commands.h"
+#include "sph/particle_exchange.h"
 #include "apps/fluid_continuity.h"
 #include "apps/jam_watch.h"
 #include "apps/probe_output.h"
@@ -135,6 +136,12 @@ int run_command(const Arguments& args)
   }
   if (!cl.has("CASE.prm"))
     throw InputError("chipflex run", "missing CASE.prm (chipflex run --help)");
+  // Each rank would run the whole case and write the same files: refuse, and say what
+  // does run over MPI so far (docs/parallel.md).
+  if (sph::launched_on_several_ranks())
+    throw InputError("chipflex run", "cases do not run over MPI yet (the fluid solver does: "
+                                     "chipflex bench sph-dambreak2d under mpirun); run one "
+                                     "process with --threads N");
   if (!cl.has("--out"))
     throw InputError("chipflex run", "missing --out DIR");
   if (cl.has("--threads"))

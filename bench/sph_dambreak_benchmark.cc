@@ -8,10 +8,13 @@
 #include "bench/benchmarks.h"
 #include "common/command_line.h"
 #include "sph/case_setup.h"
+#include "sph/particle_exchange.h"
 
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <memory>
+#include <optional>
 #include <omp.h>
 
 namespace chipflex::bench
@@ -19,11 +22,21 @@ namespace chipflex::bench
 namespace
 {
 /// Steps `fluid` to `end_time` (the first step, with the set-up and first sort, outside
-/// the timing) and prints the figures, last line particle_steps_per_s=<value>.
+/// the timing) and prints the figures, last line particle_steps_per_s=<value>. Under
+/// mpirun the fluid is spread over the ranks (sph/particle_exchange.h); rank 0 prints the
+/// global figures and the slowest rank's time split into compute, halo exchange,
+/// migration and the time step's reduction.
 template <int dim>
 void time_fluid(sph::FluidSolver<dim>& fluid, double end_time, const std::string& name)
 {
+  std::shared_ptr<sph::ParticleExchange<dim>> exchange;
+  if (sph::launched_on_several_ranks())
+  {
+    exchange = std::make_shared<sph::ParticleExchange<dim>>();
+    fluid.distribute(exchange);
+  }
   fluid.step();
+  const sph::ExchangeStatistics before = exchange ? exchange->statistics() : sph::ExchangeStatistics{};
   const auto t0 = std::chrono::steady_clock::now();
   const std::int64_t first_step = fluid.step_count();
   while (fluid.time() < end_time)
@@ -31,20 +44,47 @@ void time_fluid(sph::FluidSolver<dim>& fluid, double end_time, const std::string
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const std::int64_t steps = fluid.step_count() - first_step;
-  const double n = double(fluid.n_particles());
+  // Per rank: seconds, halo, migration, reduction (maxima); owned fluid, ghosts (sums).
+  double maxima[4] = {seconds, 0, 0, 0};
+  double sums[2] = {double(fluid.n_fluid() - fluid.n_ghosts()), double(fluid.n_ghosts())};
+  int rank = 0, n_ranks = 1;
+  if (exchange)
+  {
+    const auto& after = exchange->statistics();
+    maxima[1] = after.halo_seconds - before.halo_seconds;
+    maxima[2] = after.migration_seconds - before.migration_seconds;
+    maxima[3] = after.reduction_seconds - before.reduction_seconds;
+    exchange->maximum(maxima, 4);
+    exchange->sum(sums, 2);
+    rank = exchange->rank();
+    n_ranks = exchange->n_ranks();
+  }
+  if (rank != 0)
+    return;
+  const double n = double(fluid.n_boundary()) + sums[0];
   std::printf("case=%s (t = %g s)\n", name.c_str(), fluid.time());
-  std::printf("particles=%zu (fluid %zu, boundary %zu)\n", fluid.n_particles(), fluid.n_fluid(),
-              fluid.n_boundary());
+  std::printf("particles=%.0f (fluid %.0f, boundary %zu)\n", n, sums[0], fluid.n_boundary());
   std::printf("steps=%lld\n", static_cast<long long>(steps));
+  std::printf("ranks=%d\n", n_ranks);
   std::printf("threads=%d\n", omp_get_max_threads());
-  std::printf("seconds=%.3f\n", seconds);
-  std::printf("bytes_per_particle=%.1f\n", double(fluid.memory_bytes()) / n);
-  std::printf("particle_steps_per_s=%.4g\n", n * double(steps) / seconds);
+  std::printf("seconds=%.3f\n", maxima[0]);
+  if (exchange)
+  {
+    std::printf("ghosts_per_rank=%.0f\n", sums[1] / n_ranks);
+    std::printf("slowest_rank_seconds: halo=%.3f migration=%.3f reduction=%.3f\n", maxima[1],
+                maxima[2], maxima[3]);
+  }
+  std::printf("bytes_per_particle=%.1f\n",
+              double(fluid.memory_bytes()) / double(fluid.n_particles()));
+  std::printf("particle_steps_per_s=%.4g\n", n * double(steps) / maxima[0]);
 }
 } // namespace
 
 int sph_dambreak2d_benchmark(const Arguments& args)
 {
+  std::optional<sph::MpiSession> mpi; // under mpirun: the fluid over the ranks
+  if (sph::launched_on_several_ranks())
+    mpi.emplace();
   common::CommandLine cl(
       "chipflex bench sph-dambreak2d [options]",
       "DualSPHysics CaseDambreakVal2D to t = 0.05 s; last line "
@@ -92,6 +132,9 @@ int sph_dambreak2d_benchmark(const Arguments& args)
 // kernel there; chipflex has Wendland's, which costs the same per pair.
 int sph_dambreak3d_benchmark(const Arguments& args)
 {
+  std::optional<sph::MpiSession> mpi; // under mpirun: the fluid over the ranks
+  if (sph::launched_on_several_ranks())
+    mpi.emplace();
   common::CommandLine cl("chipflex bench sph-dambreak3d [options]",
                          "DualSPHysics CaseDambreak (3D) to t = 0.02 s; last line "
                          "particle_steps_per_s=<value>");

@@ -232,7 +232,31 @@ void FluidSolver<dim>::force_pass()
     in.position_divergence = im.position_divergence.data();
     in.closest = im.closest.data();
   }
+  if (exchange_)
+  {
+    // Ghosts' own sums, and those of wall particles that no owned particle sees, would
+    // be thrown away: skip them (a ghost keeps the filling its owner sent).
+    const SlabDecomposition& slabs = exchange_->decomposition();
+    const double reach = im.grid.cell_size();
+    im.active.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const double s = p.position[slabs.axis()][i];
+      im.active[i] = i < nb ? s >= slabs.lower(exchange_->rank()) - reach &&
+                                  s < slabs.upper(exchange_->rank()) + reach
+                            : !p.is_ghost(i);
+    }
+    in.active = im.active.data();
+  }
   dot_rr2_max_ = im.pass(in, im.policies, nb, n);
+  if (exchange_)
+    for (std::size_t i = 0; i < n; ++i)
+      if (!im.active[i])
+      {
+        p.density_rate[i] = 0;
+        for (int d = 0; d < dim; ++d)
+          p.acceleration[d][i] = 0;
+      }
 
   for (std::size_t w = 0; w < vertex_forces_.size(); ++w)
     for (std::size_t k = 0; k < vertex_forces_[w].size(); ++k)

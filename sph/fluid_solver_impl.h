@@ -71,6 +71,8 @@ struct FluidSolver<dim>::Impl
   std::array<std::vector<float>, dim> shift_sum;
   std::vector<float> position_divergence, closest;
   float inverse_w_dp = 0;
+  /// Over MPI, by particle: its sums are needed on this rank (ForcePassInput::active).
+  std::vector<std::uint8_t> active;
   TaitEquationOfState eos{1000, 10, 7};
   PairPolicies policies;
   PassFunction pass = nullptr;

@@ -29,7 +29,8 @@ void FluidSolver<dim>::shift_particles(double dt)
     // too: shifted there, the 2D drill flute tore behind its chips (11.6 % of the fluid
     // gone, against 3.5 % held); the skin's guard keeps them on their side. The clumping
     // check covers the particles that are shifted.
-    if ((!p.zone.empty() && p.zone[i] != 0) || (!p.skin.empty() && p.skin[i] != 0.0f))
+    if ((!p.zone.empty() && p.zone[i] != 0) || (!p.skin.empty() && p.skin[i] != 0.0f) ||
+        p.is_ghost(i)) // a ghost's sums are not formed here (its owner shifts it)
       continue;
     // Within reach of an open boundary's plane a fluid particle meets the buffer particles
     // the boundary places: left out of the clumping check.

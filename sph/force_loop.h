@@ -64,6 +64,10 @@ struct ForcePassInput
   float* shift_sum[dim];      ///< the concentration gradient's sum
   float* position_divergence; ///< div r
   float* closest;             ///< the closest fluid neighbour's squared distance
+  /// Over MPI (null otherwise): 0 for a particle whose sums no owned particle needs (a
+  /// ghost, a wall particle beyond a cell of the rank's slab); its results are left
+  /// as they are.
+  const std::uint8_t* active = nullptr;
 };
 
 namespace detail
@@ -202,6 +206,8 @@ float particle_loop(const ForcePassInput<dim>& in, const Viscosity& visc, const 
   float dot_rr2_max = 0; // this thread's maximum
   auto one = [&](std::size_t i)
   {
+    if (in.active && !in.active[i])
+      return;
     double xi[3] = {in.x[0][i], in.x[1][i], dim == 3 ? in.x[dim - 1][i] : 0.0};
     float vi[3] = {in.v[0][i], in.v[1][i], dim == 3 ? in.v[dim - 1][i] : 0.0f};
     const float rhoi = in.rho[i], pti = in.pressure_term[i];

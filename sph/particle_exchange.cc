@@ -132,12 +132,9 @@ void ParticleExchange<dim>::initialise(ParticleArrays<dim>& p, const Vector& dom
   n_layers_ = std::size_t(std::ceil((domain_max[axis] - domain_min[axis]) / cell_size));
   n_layers_ = std::max<std::size_t>(n_layers_, 1);
   // Every rank holds the whole fluid here: its own histogram is the global one.
-  std::vector<std::uint64_t> per_layer(n_layers_, 0);
-  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
-  {
-    const double s = (p.position[axis][i] - origin_) / layer_width_;
-    per_layer[std::size_t(std::clamp(s, 0.0, double(n_layers_ - 1)))] += 1;
-  }
+  std::vector<double> per_layer(n_layers_, 0);
+  add_to_histogram(p, axis, p.n_boundary, p.size(), 1.0, per_layer);
+  add_to_histogram(p, axis, 0, p.n_boundary, wall_weight, per_layer);
   slabs_ = SlabDecomposition(
       axis, SlabDecomposition::balanced_cuts(per_layer, origin_, layer_width_, n_ranks_),
       2 * cell_size);
@@ -186,20 +183,29 @@ std::vector<double> ParticleExchange<dim>::all_to_all(const std::vector<std::vec
 }
 
 template <int dim>
-std::vector<std::uint64_t>
+std::vector<double>
 ParticleExchange<dim>::global_histogram(const ParticleArrays<dim>& p) const
 {
-  const int axis = slabs_.axis();
-  std::vector<std::uint64_t> per_layer(n_layers_, 0);
-  for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+  std::vector<double> per_layer(n_layers_, 0);
+  add_to_histogram(p, slabs_.axis(), p.n_boundary, p.size(), 1.0, per_layer);
+  MPI_Allreduce(MPI_IN_PLACE, per_layer.data(), int(n_layers_), MPI_DOUBLE, MPI_SUM,
+                MPI_COMM_WORLD);
+  // Every rank holds every wall particle: added after the sum, once.
+  add_to_histogram(p, slabs_.axis(), 0, p.n_boundary, wall_weight, per_layer);
+  return per_layer;
+}
+
+template <int dim>
+void ParticleExchange<dim>::add_to_histogram(const ParticleArrays<dim>& p, int axis,
+                                             std::size_t first, std::size_t last,
+                                             double weight, std::vector<double>& per_layer) const
+{
+  for (std::size_t i = first; i < last; ++i)
   {
     const double s = (p.position[axis][i] - origin_) / layer_width_;
     if (!p.is_ghost(i) && std::isfinite(s))
-      per_layer[std::size_t(std::clamp(s, 0.0, double(n_layers_ - 1)))] += 1;
+      per_layer[std::size_t(std::clamp(s, 0.0, double(n_layers_ - 1)))] += weight;
   }
-  MPI_Allreduce(MPI_IN_PLACE, per_layer.data(), int(n_layers_), MPI_UINT64_T, MPI_SUM,
-                MPI_COMM_WORLD);
-  return per_layer;
 }
 
 template <int dim>
@@ -207,7 +213,7 @@ void ParticleExchange<dim>::rebalance(const ParticleArrays<dim>& p)
 {
   const auto per_layer = global_histogram(p);
   const auto load = slabs_.loads(per_layer, origin_, layer_width_);
-  std::uint64_t total = 0, busiest = 0;
+  double total = 0, busiest = 0;
   for (const auto l : load)
     total += l, busiest = std::max(busiest, l);
   // Every rank sees the same histogram, so all take the same decision.
@@ -217,6 +223,31 @@ void ParticleExchange<dim>::rebalance(const ParticleArrays<dim>& p)
       slabs_.axis(), SlabDecomposition::balanced_cuts(per_layer, origin_, layer_width_, n_ranks_),
       slabs_.halo_width());
   ++statistics_.rebalances;
+}
+
+template <int dim>
+void ParticleExchange<dim>::synchronise_walls(ParticleArrays<dim>& p, const SlabDecomposition& old)
+{
+  const std::size_t nb = p.n_boundary;
+  std::vector<double> values(2 * nb + 1, 0.0);
+  for (std::size_t i = 0; i < nb; ++i)
+  {
+    double x[dim];
+    for (int d = 0; d < dim; ++d)
+      x[d] = p.position[d][i];
+    if (old.owner(x) == rank_)
+    {
+      values[2 * i] = double(p.density[i]);
+      values[2 * i + 1] = double(p.density_previous[i]);
+    }
+  }
+  // Exactly one rank contributes each value: the sum is that value.
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), int(2 * nb), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  for (std::size_t i = 0; i < nb; ++i)
+  {
+    p.density[i] = float(values[2 * i]);
+    p.density_previous[i] = float(values[2 * i + 1]);
+  }
 }
 
 template <int dim>
@@ -308,10 +339,14 @@ void ParticleExchange<dim>::exchange(ParticleArrays<dim>& p)
   migrate(p);
   if (++calls_ % std::uint64_t(std::max(rebalance_every, 1)) == 0)
   {
-    const auto before = statistics_.rebalances;
+    const SlabDecomposition old = slabs_;
     rebalance(p);
-    if (statistics_.rebalances != before)
+    if (statistics_.rebalances != old_rebalances_)
+    {
+      old_rebalances_ = statistics_.rebalances;
+      synchronise_walls(p, old);
       migrate(p);
+    }
   }
   const auto t1 = Clock::now();
   statistics_.migration_seconds += std::chrono::duration<double>(t1 - t0).count();

@@ -92,12 +92,22 @@ public:
   std::size_t n_ghosts() const { return n_ghosts_; }
 
   int rebalance_every = 100;
+  /// A wall particle's work against a fluid particle's in the balance.
+  double wall_weight = 0.25;
 
 private:
-  /// Particle counts per cell layer along the axis, summed over the ranks.
-  std::vector<std::uint64_t> global_histogram(const ParticleArrays<dim>& p) const;
+  /// Particles per cell layer along the axis, summed over the ranks: the work to share.
+  /// A wall particle costs about what a fluid particle does (its sums run over the fluid
+  /// only, but it has fewer neighbours), so both count.
+  std::vector<double> global_histogram(const ParticleArrays<dim>& p) const;
+  void add_to_histogram(const ParticleArrays<dim>& p, int axis, std::size_t first,
+                        std::size_t last, double weight, std::vector<double>& per_layer) const;
   void rebalance(const ParticleArrays<dim>& p);
   void migrate(ParticleArrays<dim>& p);
+  /// After the cuts moved: a rank computes only the wall particles within a cell of its
+  /// slab (the others' densities go stale), so every wall particle's density is taken
+  /// from the rank that owned its position under the `old` cuts.
+  void synchronise_walls(ParticleArrays<dim>& p, const SlabDecomposition& old);
   void build_ghosts(ParticleArrays<dim>& p);
   /// Sends send[r] to rank r and returns what every rank sent here, in rank order.
   std::vector<double> all_to_all(const std::vector<std::vector<double>>& send,
@@ -107,7 +117,7 @@ private:
   SlabDecomposition slabs_;
   double origin_ = 0, layer_width_ = 1;
   std::size_t n_layers_ = 1;
-  std::uint64_t calls_ = 0;
+  std::uint64_t calls_ = 0, old_rebalances_ = 0;
   /// This step's ghost entries: owned entry k went to rank entry_rank_[...] at record
   /// slot entry_slot_[...], over [entry_first_[k], entry_first_[k + 1]).
   std::vector<std::uint32_t> entry_first_;

@@ -73,33 +73,33 @@ public:
         f(r);
   }
 
-  /// Inner cuts for n_ranks slabs from the number of particles in each cell layer
-  /// (layer k spans [origin + k w, origin + (k + 1) w)): cut r lies at the first layer
-  /// boundary with at least r / n_ranks of the particles below it.
-  static std::vector<double> balanced_cuts(const std::vector<std::uint64_t>& per_layer,
+  /// Inner cuts for n_ranks slabs from the work in each cell layer (layer k spans
+  /// [origin + k w, origin + (k + 1) w)): cut r lies at the first layer boundary with at
+  /// least r / n_ranks of the work below it.
+  static std::vector<double> balanced_cuts(const std::vector<double>& per_layer,
                                            double origin, double layer_width, int n_ranks)
   {
-    std::uint64_t total = 0;
+    double total = 0;
     for (const auto c : per_layer)
       total += c;
     std::vector<double> cuts;
-    std::uint64_t below = 0;
+    double below = 0;
     std::size_t k = 0;
     for (int r = 1; r < n_ranks; ++r)
     {
       // below >= r total / n_ranks, in integers.
-      while (k < per_layer.size() && below * std::uint64_t(n_ranks) < std::uint64_t(r) * total)
+      while (k < per_layer.size() && below * n_ranks < r * total)
         below += per_layer[k++];
       cuts.push_back(origin + double(k) * layer_width);
     }
     return cuts;
   }
 
-  /// The particles each rank would own with these cuts, from the same histogram.
-  std::vector<std::uint64_t> loads(const std::vector<std::uint64_t>& per_layer, double origin,
+  /// The work each rank would get with these cuts, from the same histogram.
+  std::vector<double> loads(const std::vector<double>& per_layer, double origin,
                                    double layer_width) const
   {
-    std::vector<std::uint64_t> load(n_ranks(), 0);
+    std::vector<double> load(n_ranks(), 0.0);
     for (std::size_t k = 0; k < per_layer.size(); ++k)
     {
       const double centre = origin + (double(k) + 0.5) * layer_width;

@@ -87,17 +87,17 @@ TEST_CASE("slabs: balanced cuts split the particle count evenly on layer bounds"
 {
   // 10 layers of width 0.5 from x = 2, 100 particles each: four ranks cut at 25 %, 50 %,
   // 75 %, i.e. after 3 (300 >= 250), 5 and 8 layers.
-  const std::vector<std::uint64_t> even(10, 100);
+  const std::vector<double> even(10, 100);
   const auto cuts = SlabDecomposition::balanced_cuts(even, 2.0, 0.5, 4);
   REQUIRE(cuts.size() == 3);
   CHECK(cuts[0] == 2.0 + 3 * 0.5);
   CHECK(cuts[1] == 2.0 + 5 * 0.5);
   CHECK(cuts[2] == 2.0 + 8 * 0.5);
   const SlabDecomposition s(0, cuts, 1.0);
-  CHECK(s.loads(even, 2.0, 0.5) == std::vector<std::uint64_t>{300, 200, 300, 200});
+  CHECK(s.loads(even, 2.0, 0.5) == std::vector<double>{300, 200, 300, 200});
 
   // All particles in one layer: the other ranks get empty slabs, one rank holds them all.
-  std::vector<std::uint64_t> lump(10, 0);
+  std::vector<double> lump(10, 0);
   lump[4] = 1000;
   const SlabDecomposition lumped(0, SlabDecomposition::balanced_cuts(lump, 0.0, 1.0, 3), 1.0);
   const auto loads = lumped.loads(lump, 0.0, 1.0);
