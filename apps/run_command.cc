@@ -14,7 +14,6 @@
 #include "apps/case_file.h"
 #include "apps/channel_acoustics.h"
 #include "apps/commands.h"
-#include "sph/particle_exchange.h"
 #include "apps/fluid_continuity.h"
 #include "apps/jam_watch.h"
 #include "apps/probe_output.h"
@@ -24,6 +23,7 @@
 #include "common/command_line.h"
 #include "common/hdf5_file.h"
 #include "common/input_error.h"
+#include "sph/particle_exchange.h"
 
 #include <algorithm>
 #include <deal.II/base/parameter_handler.h>

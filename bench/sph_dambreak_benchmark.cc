@@ -14,8 +14,8 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <omp.h>
+#include <optional>
 
 namespace chipflex::bench
 {
@@ -36,7 +36,8 @@ void time_fluid(sph::FluidSolver<dim>& fluid, double end_time, const std::string
     fluid.distribute(exchange);
   }
   fluid.step();
-  const sph::ExchangeStatistics before = exchange ? exchange->statistics() : sph::ExchangeStatistics{};
+  const sph::ExchangeStatistics before =
+      exchange ? exchange->statistics() : sph::ExchangeStatistics{};
   const auto t0 = std::chrono::steady_clock::now();
   const std::int64_t first_step = fluid.step_count();
   while (fluid.time() < end_time)

@@ -183,8 +183,7 @@ std::vector<double> ParticleExchange<dim>::all_to_all(const std::vector<std::vec
 }
 
 template <int dim>
-std::vector<double>
-ParticleExchange<dim>::global_histogram(const ParticleArrays<dim>& p) const
+std::vector<double> ParticleExchange<dim>::global_histogram(const ParticleArrays<dim>& p) const
 {
   std::vector<double> per_layer(n_layers_, 0);
   add_to_histogram(p, slabs_.axis(), p.n_boundary, p.size(), 1.0, per_layer);
@@ -197,8 +196,8 @@ ParticleExchange<dim>::global_histogram(const ParticleArrays<dim>& p) const
 
 template <int dim>
 void ParticleExchange<dim>::add_to_histogram(const ParticleArrays<dim>& p, int axis,
-                                             std::size_t first, std::size_t last,
-                                             double weight, std::vector<double>& per_layer) const
+                                             std::size_t first, std::size_t last, double weight,
+                                             std::vector<double>& per_layer) const
 {
   for (std::size_t i = first; i < last; ++i)
   {

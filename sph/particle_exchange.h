@@ -100,8 +100,8 @@ private:
   /// A wall particle costs about what a fluid particle does (its sums run over the fluid
   /// only, but it has fewer neighbours), so both count.
   std::vector<double> global_histogram(const ParticleArrays<dim>& p) const;
-  void add_to_histogram(const ParticleArrays<dim>& p, int axis, std::size_t first,
-                        std::size_t last, double weight, std::vector<double>& per_layer) const;
+  void add_to_histogram(const ParticleArrays<dim>& p, int axis, std::size_t first, std::size_t last,
+                        double weight, std::vector<double>& per_layer) const;
   void rebalance(const ParticleArrays<dim>& p);
   void migrate(ParticleArrays<dim>& p);
   /// After the cuts moved: a rank computes only the wall particles within a cell of its

@@ -76,8 +76,8 @@ public:
   /// Inner cuts for n_ranks slabs from the work in each cell layer (layer k spans
   /// [origin + k w, origin + (k + 1) w)): cut r lies at the first layer boundary with at
   /// least r / n_ranks of the work below it.
-  static std::vector<double> balanced_cuts(const std::vector<double>& per_layer,
-                                           double origin, double layer_width, int n_ranks)
+  static std::vector<double> balanced_cuts(const std::vector<double>& per_layer, double origin,
+                                           double layer_width, int n_ranks)
   {
     double total = 0;
     for (const auto c : per_layer)
@@ -97,7 +97,7 @@ public:
 
   /// The work each rank would get with these cuts, from the same histogram.
   std::vector<double> loads(const std::vector<double>& per_layer, double origin,
-                                   double layer_width) const
+                            double layer_width) const
   {
     std::vector<double> load(n_ranks(), 0.0);
     for (std::size_t k = 0; k < per_layer.size(); ++k)
