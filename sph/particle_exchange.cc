@@ -123,9 +123,18 @@ template <int dim>
 void ParticleExchange<dim>::initialise(ParticleArrays<dim>& p, const Vector& domain_min,
                                        const Vector& domain_max, double cell_size)
 {
+  // The longest extent of the particles, fluid and walls (a tank or a channel bounds where
+  // the fluid goes), not of the domain box, which is often padded for splashes upwards.
+  Vector lo = Vector::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (int d = 0; d < dim; ++d)
+    {
+      lo[d] = std::min(lo[d], p.position[d][i]);
+      hi[d] = std::max(hi[d], p.position[d][i]);
+    }
   int axis = 0;
   for (int d = 1; d < dim; ++d)
-    if (domain_max[d] - domain_min[d] > domain_max[axis] - domain_min[axis])
+    if (hi[d] - lo[d] > hi[axis] - lo[axis])
       axis = d;
   origin_ = domain_min[axis];
   layer_width_ = cell_size;

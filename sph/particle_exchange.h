@@ -76,8 +76,8 @@ public:
   const ExchangeStatistics& statistics() const { return statistics_; }
 
   /// Set-up: `p` holds every fluid particle of the case on every rank. Cuts the slabs
-  /// along the longest axis of the domain box, on the neighbour grid's layers of width
-  /// `cell_size`, and keeps this rank's own fluid particles.
+  /// along the particles' longest extent (fluid and walls), on the neighbour grid's layers
+  /// of width `cell_size` over the domain box, and keeps this rank's own fluid particles.
   void initialise(ParticleArrays<dim>& p, const Vector& domain_min, const Vector& domain_max,
                   double cell_size);
   /// Step start: ghosts out, migration, rebalancing (every `rebalance_every` calls, when

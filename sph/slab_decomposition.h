@@ -12,6 +12,7 @@
 // formed from the fluid around them (dynamic boundary particles, or the densities taken
 // from the fluid at sliding walls).
 //
+// The axis is the longest extent of the particles, fluid and walls, at the set-up.
 // Cuts lie on the neighbour grid's cell layers and are chosen from a histogram of the
 // fluid particles per layer, so that every rank gets about the same number
 // (balanced_cuts). Slabs rather than recursive bisection: a drill flute, a channel or a
