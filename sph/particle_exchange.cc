@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <exception>
 #include <limits>
 #include <mpi.h>
 #include <stdexcept>
@@ -102,6 +103,11 @@ MpiSession::MpiSession()
 
 MpiSession::~MpiSession()
 {
+  // Unwinding from an error on this rank: the others may wait in a collective, and
+  // MPI_Finalize would wait for them. Leaving without it, after `main` has printed the
+  // error, makes mpirun end the whole job.
+  if (std::uncaught_exceptions() > 0)
+    return;
   int finalised = 0;
   MPI_Finalized(&finalised);
   if (started_ && !finalised)

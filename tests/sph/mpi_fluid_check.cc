@@ -3,7 +3,7 @@
 //   mpi_fluid_check CASE END_TIME
 //     CASE: dambreak2d  a 0.5 x 1 m column in a 3 m tank, dp 0.02, Verlet, dummy walls
 //           box2d       a collapsing block in a closed box, Lennard-Jones walls, symplectic
-//                       scheme, particle shifting
+//                       scheme, particle shifting, laminar viscosity
 //           dambreak3d  a small 3D column, dp 0.04, Verlet, dummy walls
 //
 // While it runs, every 100 steps: the halo holds exactly what it must (every ghost is a
@@ -73,6 +73,8 @@ CaseDescription<2> box_2d()
   p.particle_spacing = 0.01;
   p.gravity = Eigen::Vector2d(0, -9.81);
   p.speed_of_sound = 20;
+  p.viscosity = ViscosityModel::laminar; // the other viscosity model (Lo & Shao 2002)
+  p.kinematic_viscosity = 1e-4;
   p.scheme = TimeScheme::symplectic;
   p.density_diffusion = DensityDiffusionModel::molteni_colagrossi;
   p.shifting_coefficient = 2;
