@@ -12,7 +12,9 @@
 //                     corrector): the owners send the ghosts' new states;
 //   maximum()         the time step's maxima over all ranks.
 // A ghost is a fluid particle flagged in ParticleArrays::halo: it takes part in the force
-// pass as a neighbour, and its own results are not used.
+// pass as a neighbour, and its own sums are skipped (as are those of the wall particles
+// beyond a cell of the slab, whose densities go stale until synchronised when the cuts
+// move).
 //
 // Determinism: each rank's arrays, and so its answers, depend only on the number of
 // ranks; runs on different numbers of ranks sum the same pairs in another order and agree
