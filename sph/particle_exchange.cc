@@ -156,15 +156,18 @@ void ParticleExchange<dim>::initialise(ParticleArrays<dim>& p, const Vector& dom
   p.halo.assign(p.size(), 0);
   std::vector<std::size_t> others;
   for (std::size_t i = p.n_boundary; i < p.size(); ++i)
-  {
-    double x[dim];
-    for (int d = 0; d < dim; ++d)
-      x[d] = p.position[d][i];
-    const int owner = slabs_.owner(x);
-    if (owner >= 0 && owner != rank_)
+    if (const int owner = owner_of(p, i); owner >= 0 && owner != rank_)
       others.push_back(i);
-  }
   p.remove(others);
+}
+
+template <int dim>
+int ParticleExchange<dim>::owner_of(const ParticleArrays<dim>& p, std::size_t i) const
+{
+  double x[dim];
+  for (int d = 0; d < dim; ++d)
+    x[d] = p.position[d][i];
+  return slabs_.owner(x);
 }
 
 template <int dim>
@@ -272,17 +275,14 @@ void ParticleExchange<dim>::migrate(ParticleArrays<dim>& p)
   std::vector<std::size_t> leaving;
   for (std::size_t i = p.n_boundary; i < p.size(); ++i)
   {
-    double x[dim];
-    for (int d = 0; d < dim; ++d)
-      x[d] = p.position[d][i];
-    const int owner = slabs_.owner(x);
+    const int owner = owner_of(p, i);
     if (owner < 0 || owner == rank_)
       continue;
     double record[size];
     record[0] = double(p.id[i]);
     for (int d = 0; d < dim; ++d)
     {
-      record[1 + d] = x[d];
+      record[1 + d] = p.position[d][i];
       record[1 + dim + d] = double(p.velocity[d][i]);
       record[1 + 2 * dim + d] = double(p.velocity_previous[d][i]);
     }

@@ -105,6 +105,8 @@ private:
   void add_to_histogram(const ParticleArrays<dim>& p, int axis, std::size_t first, std::size_t last,
                         double weight, std::vector<double>& per_layer) const;
   void rebalance(const ParticleArrays<dim>& p);
+  /// The rank that owns particle i's position (-1: NaN).
+  int owner_of(const ParticleArrays<dim>& p, std::size_t i) const;
   void migrate(ParticleArrays<dim>& p);
   /// After the cuts moved: a rank computes only the wall particles within a cell of its
   /// slab (the others' densities go stale), so every wall particle's density is taken
