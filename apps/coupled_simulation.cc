@@ -320,9 +320,11 @@ std::vector<double> CoupledSimulation<dim>::probe_values() const
 }
 
 template <int dim>
-void CoupledSimulation<dim>::save(Hdf5File& file) const
+void CoupledSimulation<dim>::save(Hdf5File* file_pointer) const
 {
-  fluid_.save(file);
+  // Bodies do not run over MPI (make_simulation refuses): this is one process.
+  Hdf5File& file = *file_pointer;
+  fluid_.save(file_pointer);
   cosim_->save_bodies(file, "/bodies");
   if (chip_source_)
   {

@@ -37,7 +37,7 @@ public:
   ParticleFrame frame() const override;
   std::vector<std::string> probe_columns() const override;
   std::vector<double> probe_values() const override;
-  void save(Hdf5File& file) const override;
+  void save(Hdf5File* file) const override;
   void load(const Hdf5File& file) override;
   std::string summary() const override;
   std::size_t n_fluid_particles() const override { return fluid_.n_fluid_particles(); }

@@ -1,6 +1,7 @@
 #include "apps/fluid_simulation.h"
 
 #include "common/hdf5_file.h"
+#include "sph/particle_exchange.h"
 #include "sph/probes.h"
 
 #include <algorithm>
@@ -30,10 +31,28 @@ std::string open_boundary_flow_text(const sph::OpenBoundary<dim>& z)
 
 template <int dim>
 FluidSimulation<dim>::FluidSimulation(const sph::CaseDescription<dim>& description,
-                                      const std::string& output_directory)
+                                      const std::string& output_directory, bool distributed)
     : description_(description), fluid_(sph::build_fluid(description_)),
       walls_(output_directory, "walls")
 {
+  if (distributed)
+  {
+    auto exchange = std::make_shared<sph::ParticleExchange<dim>>();
+    writes_ = exchange->rank() == 0;
+    fluid_->distribute(exchange);
+  }
+}
+
+template <int dim>
+std::size_t FluidSimulation<dim>::n_fluid_particles() const
+{
+  fluid_->initialise();
+  const auto* exchange = fluid_->exchange();
+  if (!exchange)
+    return fluid_->n_fluid();
+  double n = double(fluid_->n_fluid() - fluid_->n_ghosts());
+  exchange->sum(&n, 1);
+  return std::size_t(n);
 }
 
 template <int dim>
@@ -53,7 +72,7 @@ ParticleFrame FluidSimulation<dim>::frame() const
                       {"fluid_force", dim == 2 ? "N/m" : "N", fluid_->wall_vertex_forces(id)}}});
   }
   // A fluid without walls (no tank) writes no walls.xdmf rather than an empty one.
-  if (!walls.empty())
+  if (!walls.empty() && writes_)
     walls_.write(time(), walls);
   return particle_frame(*fluid_);
 }
@@ -119,7 +138,7 @@ std::vector<double> FluidSimulation<dim>::probe_values() const
 }
 
 template <int dim>
-void FluidSimulation<dim>::save(Hdf5File& file) const
+void FluidSimulation<dim>::save(Hdf5File* file) const
 {
   fluid_->save(file, "/fluid");
 }
@@ -137,13 +156,22 @@ std::string FluidSimulation<dim>::summary() const
   fluid_->initialise();
   const auto& p = fluid_->parameters();
   std::ostringstream s;
-  s << dim << "D SPH fluid: " << fluid_->n_fluid() << " fluid + " << fluid_->n_boundary()
+  s << dim << "D SPH fluid: " << n_fluid_particles() << " fluid + " << fluid_->n_boundary()
     << " boundary particles, dp = " << p.particle_spacing << " m, h = " << p.smoothing_length()
     << " m, c0 = " << p.speed_of_sound << " m/s, " << fluid_->n_walls() << " wall(s), scheme "
     << (p.scheme == sph::TimeScheme::symplectic        ? "symplectic"
         : p.scheme == sph::TimeScheme::position_verlet ? "position verlet"
                                                        : "verlet")
     << "\n";
+  if (const auto* exchange = fluid_->exchange())
+  {
+    const auto& slabs = exchange->decomposition();
+    s << "MPI: " << exchange->n_ranks() << " ranks, slabs along " << "xyz"[slabs.axis()]
+      << " cut at";
+    for (int r = 1; r < exchange->n_ranks(); ++r)
+      s << " " << slabs.lower(r);
+    s << " m, halo " << slabs.halo_width() << " m\n";
+  }
   for (int k = 0; k < fluid_->n_open_boundaries(); ++k)
   {
     const auto& z = fluid_->open_boundary(k);
@@ -215,7 +243,7 @@ std::string FluidSimulation<dim>::mass_balance(std::size_t start_fluid_particles
   const double m = fluid_->particle_mass();
   const double in = double(fluid_->n_inflow()), out = double(fluid_->n_outflow()),
                lost = double(fluid_->lost_particles().size()),
-               stored = double(fluid_->n_fluid()) - double(start_fluid_particles);
+               stored = double(n_fluid_particles()) - double(start_fluid_particles);
   std::ostringstream s;
   s.precision(9);
   s << "mass_balance: in_kg=" << m * in << " out_kg=" << m * out << " lost_kg=" << m * lost

@@ -16,8 +16,11 @@ template <int dim>
 class FluidSimulation : public Simulation
 {
 public:
+  /// `distributed`: the fluid is spread over the MPI ranks (mpirun; docs/parallel.md).
+  /// Every rank then calls every member, as the ranks' sums and gathers need; outputs are
+  /// written by rank 0.
   FluidSimulation(const sph::CaseDescription<dim>& description,
-                  const std::string& output_directory);
+                  const std::string& output_directory, bool distributed = false);
 
   /// Bodies (coupling/) may add walls and hooks to fluid() until the first frame or step.
   void advance() override { fluid_->step(); }
@@ -27,10 +30,10 @@ public:
   ParticleFrame frame() const override;
   std::vector<std::string> probe_columns() const override;
   std::vector<double> probe_values() const override;
-  void save(Hdf5File& file) const override;
+  void save(Hdf5File* file) const override;
   void load(const Hdf5File& file) override;
   std::string summary() const override;
-  std::size_t n_fluid_particles() const override { return fluid_->n_fluid(); }
+  std::size_t n_fluid_particles() const override;
   double speed_of_sound() const override { return fluid_->parameters().speed_of_sound; }
   std::size_t n_lost_particles() const override { return fluid_->lost_particles().size(); }
   std::string describe_lost_particle(std::size_t k) const override
@@ -52,6 +55,7 @@ private:
   sph::CaseDescription<dim> description_; ///< with derived c0 and domain
   std::unique_ptr<sph::FluidSolver<dim>> fluid_;
   mutable SurfaceOutput<dim> walls_;
+  bool writes_ = true; ///< false on the ranks other than 0
   std::vector<int> excluded_walls_;
 };
 } // namespace chipflex::apps

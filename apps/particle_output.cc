@@ -5,6 +5,7 @@
 #include "common/atomic_output.h"
 #include "common/hdf5_file.h"
 #include "sph/fluid_solver.h"
+#include "sph/particle_exchange.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -17,8 +18,13 @@ namespace chipflex::apps
 template <int dim>
 ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid)
 {
+  // Over MPI the whole fluid, gathered on rank 0; the other ranks' frames are empty.
+  sph::ParticleArrays<dim> gathered;
+  if (const auto* exchange = fluid.exchange())
+    gathered = exchange->gather(fluid.particles());
+  const auto& p = fluid.exchange() ? gathered : fluid.particles();
   ParticleFrame f;
-  f.n = fluid.n_particles();
+  f.n = p.size();
   f.position.assign(3 * f.n, 0.0);
   f.velocity.assign(3 * f.n, 0.0);
   f.pressure.resize(f.n);
@@ -29,7 +35,6 @@ ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid)
   f.body.resize(f.n);
   for (int w = 0; w < fluid.n_walls(); ++w)
     f.body_names.push_back(surface_name(fluid.wall(w).name));
-  const auto& p = fluid.particles();
   for (std::size_t i = 0; i < f.n; ++i)
   {
     for (int d = 0; d < dim; ++d)
@@ -37,12 +42,14 @@ ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid)
       f.position[3 * i + d] = p.position[d][i];
       f.velocity[3 * i + d] = p.velocity[d][i];
     }
-    f.pressure[i] = fluid.pressure(i);
+    const bool wall = i < p.n_boundary;
+    f.pressure[i] = fluid.pressure_at_density(p.density[i]);
     f.density[i] = p.density[i];
-    f.kind[i] = std::int64_t(fluid.kind(i));
+    f.kind[i] = std::int64_t(wall ? sph::ParticleKind::boundary : sph::ParticleKind::fluid);
     f.id[i] = std::int64_t(p.id[i]);
-    f.global_id[i] = std::int64_t(fluid.global_id(i));
-    f.body[i] = fluid.wall_of(i);
+    // FluidSolver::global_id, for these arrays (the wall block is the solver's own).
+    f.global_id[i] = std::int64_t(wall ? p.id[i] : p.n_boundary + p.id[i]);
+    f.body[i] = wall ? fluid.wall_of(i) : -1;
   }
   return f;
 }
@@ -50,9 +57,11 @@ ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid)
 template ParticleFrame particle_frame(const sph::FluidSolver<2>&);
 template ParticleFrame particle_frame(const sph::FluidSolver<3>&);
 
-ParticleOutput::ParticleOutput(const std::string& directory) : directory_(directory)
+ParticleOutput::ParticleOutput(const std::string& directory, bool writes)
+    : directory_(directory), writes_(writes)
 {
-  std::filesystem::create_directories(directory_ + "/particles");
+  if (writes_)
+    std::filesystem::create_directories(directory_ + "/particles");
 }
 
 double ParticleOutput::last_time() const
@@ -86,6 +95,11 @@ void ParticleOutput::write(double time, const ParticleFrame& f)
 {
   char name[64];
   std::snprintf(name, sizeof name, "particles/frame_%06zu.h5", frames_.size());
+  if (!writes_)
+  {
+    frames_.push_back({time, f.n, name, true});
+    return;
+  }
   {
     AtomicOutput out(directory_ + "/" + name);
     {

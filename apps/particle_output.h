@@ -46,7 +46,8 @@ ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid);
 class ParticleOutput
 {
 public:
-  explicit ParticleOutput(const std::string& directory);
+  /// `writes` false (MPI ranks other than 0): keeps the frame list, writes no file.
+  explicit ParticleOutput(const std::string& directory, bool writes = true);
   /// Restart: keep the frames written up to `time` (their times are read back from
   /// the frame files), so numbering and the XDMF continue.
   void resume(double time);
@@ -66,6 +67,7 @@ private:
     bool with_global_ids;
   };
   std::string directory_;
+  bool writes_;
   std::vector<Frame> frames_;
   std::vector<std::string> body_names_; ///< of the last frame, for the XDMF's legend
 };

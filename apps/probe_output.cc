@@ -8,8 +8,8 @@
 
 namespace chipflex::apps
 {
-ProbeOutput::ProbeOutput(std::string path, std::vector<std::string> columns)
-    : path_(std::move(path)), columns_(std::move(columns))
+ProbeOutput::ProbeOutput(std::string path, std::vector<std::string> columns, bool writes)
+    : path_(std::move(path)), columns_(std::move(columns)), writes_(writes)
 {
 }
 
@@ -49,7 +49,7 @@ void ProbeOutput::add(double time, const std::vector<double>& values)
 
 void ProbeOutput::flush() const
 {
-  if (columns_.empty())
+  if (columns_.empty() || !writes_)
     return;
   AtomicOutput out(path_);
   {

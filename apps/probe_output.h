@@ -12,7 +12,8 @@ namespace chipflex::apps
 class ProbeOutput
 {
 public:
-  ProbeOutput(std::string path, std::vector<std::string> columns);
+  /// `writes` false (MPI ranks other than 0): keeps the rows, writes no file.
+  ProbeOutput(std::string path, std::vector<std::string> columns, bool writes = true);
   void resume(double time);
   void add(double time, const std::vector<double>& values);
   void flush() const;
@@ -23,5 +24,6 @@ private:
   std::vector<std::string> columns_;
   std::vector<std::string> rows_;
   std::vector<double> row_times_;
+  bool writes_;
 };
 } // namespace chipflex::apps

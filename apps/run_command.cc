@@ -45,8 +45,13 @@ struct Cadence
 };
 
 void write_checkpoint(const std::string& path, const Simulation& sim, const Cadence& cadence,
-                      const FluidContinuityCheck& continuity, const JamWatch* jam)
+                      const FluidContinuityCheck& continuity, const JamWatch* jam, bool root)
 {
+  if (!root) // over MPI: this rank's part of the gather; rank 0 writes
+  {
+    sim.save(nullptr);
+    return;
+  }
   AtomicOutput out(path);
   {
     Hdf5File h5(out.temporary_path(), Hdf5File::Mode::create);
@@ -59,7 +64,7 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const Cade
     continuity.save(h5, "/run");
     if (jam)
       jam->save(h5, "/run");
-    sim.save(h5);
+    sim.save(&h5);
   }
   out.commit();
 }
@@ -68,7 +73,7 @@ void write_checkpoint(const std::string& path, const Simulation& sim, const Cade
 /// time, steps, frames), then the simulation's result lines. Returns the text.
 std::string write_summary(const std::string& dir, const Simulation& sim, std::size_t frames,
                           const std::string& stop_reason, const FluidContinuityCheck& continuity,
-                          bool open_boundaries, const JamWatch* jam)
+                          bool open_boundaries, const JamWatch* jam, bool root)
 {
   std::ostringstream s;
   s.precision(9);
@@ -92,6 +97,8 @@ std::string write_summary(const std::string& dir, const Simulation& sim, std::si
   const std::string results = sim.finish(dir);
   if (!results.empty())
     s << results << "\n";
+  if (!root)
+    return s.str();
   AtomicOutput out(dir + "/summary.txt");
   {
     std::ofstream f(out.temporary_path());
@@ -118,7 +125,9 @@ int run_command(const Arguments& args)
   common::CommandLine cl("chipflex run CASE.prm --out DIR [options]",
                          "Run an SPH case: particle frames (DIR/particles.xdmf), walls "
                          "(DIR/walls.xdmf), body skins (DIR/skins.xdmf), gauges (DIR/probes.csv), "
-                         "DIR/summary.txt, checkpoints (DIR/checkpoint.h5); docs/output.md.");
+                         "DIR/summary.txt, checkpoints (DIR/checkpoint.h5); docs/output.md. Under "
+                         "mpirun -np N the fluid is spread over N ranks (cases without bodies, "
+                         "open boundaries or thin skins; docs/parallel.md).");
   cl.add_positional("CASE.prm", "case file (deal.II ParameterHandler format)", false);
   cl.add_option("--out", "DIR", "output folder (created)");
   cl.add_option("--threads", "N", "OpenMP threads (default: OMP_NUM_THREADS or all cores)");
@@ -136,12 +145,15 @@ int run_command(const Arguments& args)
   }
   if (!cl.has("CASE.prm"))
     throw InputError("chipflex run", "missing CASE.prm (chipflex run --help)");
-  // Each rank would run the whole case and write the same files: refuse, and say what
-  // does run over MPI so far (docs/parallel.md).
+  // Under mpirun the fluid is spread over the ranks (docs/parallel.md). Every rank runs
+  // this loop and calls the simulation alike (its sums and gathers are collective); rank
+  // 0 prints and writes.
+  std::unique_ptr<sph::MpiSession> mpi;
   if (sph::launched_on_several_ranks())
-    throw InputError("chipflex run", "cases do not run over MPI yet (the fluid solver does: "
-                                     "chipflex bench sph-dambreak2d under mpirun); run one "
-                                     "process with --threads N");
+    mpi = std::make_unique<sph::MpiSession>();
+  const bool root = !mpi || mpi->rank() == 0;
+  if (!root)
+    std::cout.setstate(std::ios::badbit);
   if (!cl.has("--out"))
     throw InputError("chipflex run", "missing --out DIR");
   if (cl.has("--threads"))
@@ -162,10 +174,11 @@ int run_command(const Arguments& args)
   const double frame_interval = case_file.frame_interval;
   const double probe_interval = case_file.probe_interval;
   const std::string dir = cl.get("--out");
-  std::filesystem::create_directories(dir);
+  if (root)
+    std::filesystem::create_directories(dir);
   const std::string checkpoint_path = dir + "/checkpoint.h5";
 
-  auto sim = make_simulation(case_file, dir);
+  auto sim = make_simulation(case_file, dir, mpi != nullptr);
   std::cout << sim->summary() << std::endl;
   {
     auto frequencies = sim->natural_frequencies();
@@ -201,9 +214,9 @@ int run_command(const Arguments& args)
                 << " s; the ramp's low flow and its acceleration's pressure can pass for a jam"
                 << std::endl;
   }
-  ParticleOutput particles(dir);
+  ParticleOutput particles(dir, root);
   const std::vector<std::string> columns = sim->probe_columns();
-  ProbeOutput probes(dir + "/probes.csv", columns);
+  ProbeOutput probes(dir + "/probes.csv", columns, root);
   // The run's watches: the fluid's continuity and, when the case asks, the jam.
   FluidContinuityCheck continuity(case_file.tear_warning_fraction);
   const bool open_boundaries = case_file.dimension == 2
@@ -281,9 +294,10 @@ int run_command(const Arguments& args)
         // probes.csv first: a run killed after this checkpoint resumes from rows that
         // reach its time (ProbeOutput::resume keeps the rows up to the restart time).
         probes.flush();
-        write_checkpoint(checkpoint_path, *sim, cadence, continuity, jam.get());
+        write_checkpoint(checkpoint_path, *sim, cadence, continuity, jam.get(), root);
       }
-      progress.update(t, sim->step_count());
+      if (root) // it writes to stderr
+        progress.update(t, sim->step_count());
       if (jam && jam->run_done(t))
       {
         std::cout << "jam watch: the run ends " << case_file.jam_watch.stop_after
@@ -300,14 +314,15 @@ int run_command(const Arguments& args)
     // The state the solver stopped in is what the user needs to see: a frame at the stop
     // time (unless the last frame is already there), the gauges up to it, the result
     // files and the summary. The last checkpoint stays as it was.
-    progress.finish(sim->time(), sim->step_count());
+    if (root)
+      progress.finish(sim->time(), sim->step_count());
     try
     {
       if (sim->time() > particles.last_time())
         particles.write(sim->time(), sim->frame());
       probes.flush();
       std::cout << write_summary(dir, *sim, particles.n_frames(), e.what(), continuity,
-                                 open_boundaries, jam.get())
+                                 open_boundaries, jam.get(), root)
                 << std::flush;
     }
     catch (const std::exception& w)
@@ -317,10 +332,11 @@ int run_command(const Arguments& args)
     }
     throw;
   }
-  progress.finish(sim->time(), sim->step_count());
+  if (root)
+    progress.finish(sim->time(), sim->step_count());
   probes.flush();
   std::cout << write_summary(dir, *sim, particles.n_frames(), "", continuity, open_boundaries,
-                             jam.get())
+                             jam.get(), root)
             << std::flush;
   std::cout << "finished at t = " << sim->time() << " s after " << sim->step_count() << " steps; "
             << particles.n_frames() << " frames in " << dir

@@ -31,7 +31,8 @@ public:
   virtual std::vector<std::string> probe_columns() const = 0;
   virtual std::vector<double> probe_values() const = 0;
   /// Complete state into / from an open checkpoint file (each part in its own group).
-  virtual void save(Hdf5File& file) const = 0;
+  /// Over MPI every rank calls save() and rank 0 writes: the others pass null.
+  virtual void save(Hdf5File* file) const = 0;
   virtual void load(const Hdf5File& file) = 0;
   /// The fluid's artificial speed of sound c0 (derived by the case builder when the case
   /// leaves it at 0), m/s.

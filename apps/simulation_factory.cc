@@ -4,13 +4,18 @@
 #include "apps/contact_case_keys.h"
 #include "apps/coupled_simulation.h"
 #include "apps/fluid_simulation.h"
+#include "common/input_error.h"
 
 namespace chipflex::apps
 {
-std::unique_ptr<Simulation> make_simulation(const CaseFile& c, const std::string& dir)
+std::unique_ptr<Simulation> make_simulation(const CaseFile& c, const std::string& dir,
+                                            bool distributed)
 {
   if (n_case_bodies(*c.parameters, c.body_subsections) > 0)
   {
+    if (distributed)
+      throw InputError(c.path, "cases with bodies do not run over MPI yet (the fluid alone "
+                               "does); run one process with --threads N");
     const ContactCase contact = read_contact_case(*c.parameters, c.path);
     if (c.dimension == 2)
       return std::make_unique<CoupledSimulation<2>>(
@@ -21,7 +26,7 @@ std::unique_ptr<Simulation> make_simulation(const CaseFile& c, const std::string
         contact);
   }
   if (c.dimension == 2)
-    return std::make_unique<FluidSimulation<2>>(c.case_2d, dir);
-  return std::make_unique<FluidSimulation<3>>(c.case_3d, dir);
+    return std::make_unique<FluidSimulation<2>>(c.case_2d, dir, distributed);
+  return std::make_unique<FluidSimulation<3>>(c.case_3d, dir, distributed);
 }
 } // namespace chipflex::apps

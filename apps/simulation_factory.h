@@ -10,6 +10,8 @@
 
 namespace chipflex::apps
 {
-/// Builds the simulation of case `c`, its outputs going to `dir`.
-std::unique_ptr<Simulation> make_simulation(const CaseFile& c, const std::string& dir);
+/// Builds the simulation of case `c`, its outputs going to `dir`. `distributed`: spread
+/// the fluid over the MPI ranks (a fluid without bodies; others are refused).
+std::unique_ptr<Simulation> make_simulation(const CaseFile& c, const std::string& dir,
+                                            bool distributed = false);
 } // namespace chipflex::apps

@@ -309,6 +309,12 @@ double FluidSolver<dim>::pressure(std::size_t i) const
 }
 
 template <int dim>
+double FluidSolver<dim>::pressure_at_density(double rho) const
+{
+  return impl_->eos.pressure(rho);
+}
+
+template <int dim>
 void FluidSolver<dim>::fail(std::size_t i, const std::string& problem) const
 {
   std::ostringstream s;
@@ -424,6 +430,14 @@ void FluidSolver<dim>::remove_lost_particles()
     gone.push_back(i);
   }
   p.remove(gone);
+  // Over MPI the other ranks' losses count too: checked once they are shared.
+  if (!exchange_)
+    check_lost_fraction();
+}
+
+template <int dim>
+void FluidSolver<dim>::check_lost_fraction() const
+{
   const double fraction = double(lost_.size()) / double(std::max<std::size_t>(1, n_fluid_created_));
   if (fraction > parameters_.maximum_lost_fraction)
   {
@@ -493,6 +507,11 @@ double FluidSolver<dim>::step()
     shift_particles(dt);
   time_ += dt;
   ++step_;
+  if (exchange_)
+  {
+    share_run_records();
+    check_lost_fraction();
+  }
   run_hooks(HookPoint::after_step);
   return dt;
 }

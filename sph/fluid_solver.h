@@ -202,6 +202,8 @@ public:
   Vector position(std::size_t i) const;
   Vector velocity(std::size_t i) const;
   double pressure(std::size_t i) const;
+  /// The equation of state's (gauge) pressure at density rho.
+  double pressure_at_density(double rho) const;
   /// Before the first step: removes the fluid particles for which `overlaps(x)` holds
   /// (e.g. inside a body placed in the water: GenCase-style filling removes them too);
   /// they never were part of the run. Returns how many.
@@ -241,7 +243,10 @@ public:
 
   // --- restart and memory -------------------------------------------------------------
   /// Writes the complete state under `group` (particles bitwise, walls, time, step).
-  void save(Hdf5File& file, const std::string& group) const;
+  void save(Hdf5File& file, const std::string& group) const { save(&file, group); }
+  /// Over MPI every rank calls it (it gathers the fluid) and rank 0 writes: the others
+  /// pass null. The file is the one-process one, so it restarts on any number of ranks.
+  void save(Hdf5File* file, const std::string& group) const;
   /// Restores a state saved by save() for the same set-up (same walls, same counts).
   void load(const Hdf5File& file, const std::string& group);
   /// Bytes held by particle and neighbour-list arrays.
@@ -256,6 +261,11 @@ private:
   void correct_symplectic(double dt);
   void check_time_step(double dt) const;
   void remove_lost_particles();
+  /// Stops the run (SimulationError) when more fluid than the case allows was lost.
+  void check_lost_fraction() const;
+  /// Over MPI, at each step's end: every rank's new losses, largest speed and closest
+  /// pair to every rank, so that these records are the run's and the same on all ranks.
+  void share_run_records();
   void transfer_open_boundaries();
   void prescribe_open_boundaries();
   void freeze_open_boundaries();
@@ -289,6 +299,7 @@ private:
   float dot_rr2_max_ = 0;
   double acceleration_max_ = 0;
   std::vector<LostParticle<dim>> lost_;
+  std::size_t lost_shared_ = 0; ///< over MPI: lost_[0, lost_shared_) is every rank's
   std::size_t n_fluid_created_ = 0, n_fluid_initial_ = 0;
   std::vector<OpenBoundary<dim>> zones_;
   std::vector<std::int64_t> zone_created_, zone_removed_;

@@ -5,6 +5,7 @@
 #include "common/hdf5_file.h"
 #include "common/input_error.h"
 #include "sph/fluid_solver_impl.h"
+#include "sph/particle_exchange.h"
 
 #include <algorithm>
 
@@ -41,12 +42,16 @@ void split(const std::vector<double>& in, std::array<std::vector<T>, D>& a, std:
 } // namespace
 
 template <int dim>
-void FluidSolver<dim>::save(Hdf5File& file, const std::string& group) const
+void FluidSolver<dim>::save(Hdf5File* file_pointer, const std::string& group) const
 {
   const_cast<FluidSolver*>(this)->finish_setup();
-  if (exchange_)
-    throw InputError("mpi", "checkpoints do not run over MPI yet");
-  const auto& p = particles_;
+  // Over MPI the whole fluid, gathered on rank 0; the run's records are every rank's
+  // already (share_run_records).
+  const ParticleArrays<dim> gathered = exchange_ ? exchange_->gather(particles_) : ParticleArrays<dim>{};
+  if (!file_pointer)
+    return;
+  Hdf5File& file = *file_pointer;
+  const auto& p = exchange_ ? gathered : particles_;
   const std::size_t n = p.size();
   file.ensure_group(group);
   file.write_attribute(group, "dim", std::int64_t(dim));
@@ -149,8 +154,6 @@ template <int dim>
 void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
 {
   finish_setup();
-  if (exchange_)
-    throw InputError("mpi", "checkpoints do not run over MPI yet");
   auto& p = particles_;
   const std::string where = file.path() + ":" + group;
   if (file.read_integer_attribute(group, "dim") != dim)
@@ -317,10 +320,17 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
       }
   }
   boundary_moved_ = walls_moved_ = true;
+  // Over MPI every rank has read the whole fluid: cut it again for this run's ranks.
+  if (exchange_)
+  {
+    exchange_->initialise(p, parameters_.domain_min, parameters_.domain_max,
+                          impl_->grid.cell_size());
+    lost_shared_ = lost_.size();
+  }
 }
 
-template void FluidSolver<2>::save(Hdf5File&, const std::string&) const;
-template void FluidSolver<3>::save(Hdf5File&, const std::string&) const;
+template void FluidSolver<2>::save(Hdf5File*, const std::string&) const;
+template void FluidSolver<3>::save(Hdf5File*, const std::string&) const;
 template void FluidSolver<2>::load(const Hdf5File&, const std::string&);
 template void FluidSolver<3>::load(const Hdf5File&, const std::string&);
 } // namespace chipflex::sph

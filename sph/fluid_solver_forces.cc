@@ -1,6 +1,7 @@
 // FluidSolver: neighbour sorting and the force pass (fluid, dummy walls, Lennard-Jones
 // walls, gravity), with the pair policies chosen once at set-up.
 
+#include "common/input_error.h"
 #include "sph/fluid_solver_impl.h"
 #include "sph/particle_exchange.h"
 
@@ -338,18 +339,27 @@ void FluidSolver<dim>::force_pass()
       }
     }
   }
-  if (!(acceleration_max_ < 1e300)) // NaN or infinite: name the first culprit
+  const bool blew_up = !(acceleration_max_ < 1e300); // NaN or infinite
+  if (exchange_) // the time step is the global one, and so is the stop
+  {
+    double maxima[3] = {blew_up ? 0.0 : acceleration_max_, double(dot_rr2_max_), blew_up ? 1.0 : 0};
+    exchange_->maximum(maxima, 3);
+    acceleration_max_ = maxima[0];
+    dot_rr2_max_ = float(maxima[1]);
+    if (maxima[2] > 0 && !blew_up)
+    {
+      std::ostringstream s;
+      s.precision(6);
+      s << "step " << step_ << ", t = " << time_
+        << " s: a fluid particle of another rank has a non-finite acceleration (the run blew up)";
+      throw SimulationError(s.str());
+    }
+  }
+  if (blew_up) // name the first culprit
     for (std::size_t i = nb; i < n; ++i)
       for (int d = 0; d < dim; ++d)
         if (!std::isfinite(p.acceleration[d][i]))
           fail(i, "has a non-finite acceleration (the run blew up)");
-  if (exchange_) // the time step is the global one
-  {
-    double maxima[2] = {acceleration_max_, double(dot_rr2_max_)};
-    exchange_->maximum(maxima, 2);
-    acceleration_max_ = maxima[0];
-    dot_rr2_max_ = float(maxima[1]);
-  }
   if (!zones_.empty())
     freeze_open_boundaries();
   for (const std::uint32_t i : im.walls_from_fluid)

@@ -74,7 +74,23 @@ void append_record(const double* in, bool migrant, std::uint32_t halo, ParticleA
       p.velocity_previous[d][i] = float(in[1 + 2 * dim + d]);
   p.density_previous[i] = float(in[migrant ? rho_at + 1 : rho_at]);
   p.fill[i] = float(in[rho_at + (migrant ? 2 : 1)]);
-  p.halo[i] = halo;
+  if (!p.halo.empty())
+    p.halo[i] = halo;
+}
+
+template <int dim>
+void pack_migrant(const ParticleArrays<dim>& p, std::size_t i, double* out)
+{
+  out[0] = double(p.id[i]);
+  for (int d = 0; d < dim; ++d)
+  {
+    out[1 + d] = p.position[d][i];
+    out[1 + dim + d] = double(p.velocity[d][i]);
+    out[1 + 2 * dim + d] = double(p.velocity_previous[d][i]);
+  }
+  out[1 + 3 * dim] = double(p.density[i]);
+  out[2 + 3 * dim] = double(p.density_previous[i]);
+  out[3 + 3 * dim] = double(p.fill[i]);
 }
 } // namespace
 
@@ -153,6 +169,8 @@ void ParticleExchange<dim>::initialise(ParticleArrays<dim>& p, const Vector& dom
   slabs_ = SlabDecomposition(
       axis, SlabDecomposition::balanced_cuts(per_layer, origin_, layer_width_, n_ranks_),
       2 * cell_size);
+  calls_ = 0;
+  n_ghosts_ = 0;
   p.halo.assign(p.size(), 0);
   std::vector<std::size_t> others;
   for (std::size_t i = p.n_boundary; i < p.size(); ++i)
@@ -279,16 +297,7 @@ void ParticleExchange<dim>::migrate(ParticleArrays<dim>& p)
     if (owner < 0 || owner == rank_)
       continue;
     double record[size];
-    record[0] = double(p.id[i]);
-    for (int d = 0; d < dim; ++d)
-    {
-      record[1 + d] = p.position[d][i];
-      record[1 + dim + d] = double(p.velocity[d][i]);
-      record[1 + 2 * dim + d] = double(p.velocity_previous[d][i]);
-    }
-    record[1 + 3 * dim] = double(p.density[i]);
-    record[2 + 3 * dim] = double(p.density_previous[i]);
-    record[3 + 3 * dim] = double(p.fill[i]);
+    pack_migrant(p, i, record);
     send[owner].insert(send[owner].end(), record, record + size);
     leaving.push_back(i);
   }
@@ -408,6 +417,78 @@ template <int dim>
 void ParticleExchange<dim>::sum(double* values, int n) const
 {
   MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+}
+
+template <int dim>
+std::vector<double> ParticleExchange<dim>::all_gather(const std::vector<double>& mine) const
+{
+  int count = int(mine.size());
+  std::vector<int> counts(n_ranks_), offsets(n_ranks_);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  int total = 0;
+  for (int r = 0; r < n_ranks_; ++r)
+  {
+    offsets[r] = total;
+    total += counts[r];
+  }
+  std::vector<double> all(std::size_t(total) + 1); // +1: never a null buffer
+  std::vector<double> send(mine);
+  send.push_back(0.0);
+  MPI_Allgatherv(send.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+                 MPI_DOUBLE, MPI_COMM_WORLD);
+  all.pop_back();
+  return all;
+}
+
+template <int dim>
+ParticleArrays<dim> ParticleExchange<dim>::gather(const ParticleArrays<dim>& p) const
+{
+  // The wall densities: each rank computes only those near its slab, so each wall
+  // particle's comes from the rank that owns its position (exactly one: the sum is it).
+  const std::size_t nb = p.n_boundary;
+  std::vector<double> walls(2 * nb + 1, 0.0);
+  for (std::size_t i = 0; i < nb; ++i)
+    if (owner_of(p, i) == rank_)
+    {
+      walls[2 * i] = double(p.density[i]);
+      walls[2 * i + 1] = double(p.density_previous[i]);
+    }
+  MPI_Reduce(rank_ == 0 ? MPI_IN_PLACE : walls.data(), walls.data(), int(2 * nb), MPI_DOUBLE,
+             MPI_SUM, 0, MPI_COMM_WORLD);
+  constexpr int size = migrant_size<dim>;
+  std::vector<double> own;
+  for (std::size_t i = nb; i < p.size(); ++i)
+    if (!p.is_ghost(i))
+    {
+      own.resize(own.size() + size);
+      pack_migrant(p, i, &own[own.size() - size]);
+    }
+  int count = int(own.size());
+  std::vector<int> counts(n_ranks_), offsets(n_ranks_);
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  int total = 0;
+  for (int r = 0; r < n_ranks_; ++r)
+  {
+    offsets[r] = total;
+    total += counts[r];
+  }
+  std::vector<double> all(rank_ == 0 ? std::size_t(total) + 1 : 1);
+  own.push_back(0.0);
+  MPI_Gatherv(own.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+              MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  ParticleArrays<dim> whole;
+  if (rank_ != 0)
+    return whole;
+  whole = p;
+  whole.resize(nb, !p.position_previous[0].empty(), !p.zone.empty(), !p.skin.empty());
+  for (std::size_t i = 0; i < nb; ++i)
+  {
+    whole.density[i] = float(walls[2 * i]);
+    whole.density_previous[i] = float(walls[2 * i + 1]);
+  }
+  for (int k = 0; k < total; k += size)
+    append_record<dim>(&all[std::size_t(k)], true, 0, whole);
+  return whole;
 }
 
 template class ParticleExchange<2>;

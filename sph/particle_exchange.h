@@ -80,6 +80,7 @@ public:
   /// Set-up: `p` holds every fluid particle of the case on every rank. Cuts the slabs
   /// along the particles' longest extent (fluid and walls), on the neighbour grid's layers
   /// of width `cell_size` over the domain box, and keeps this rank's own fluid particles.
+  /// A restart calls it again with the checkpoint's particles (on any number of ranks).
   void initialise(ParticleArrays<dim>& p, const Vector& domain_min, const Vector& domain_max,
                   double cell_size);
   /// Step start: ghosts out, migration, rebalancing (every `rebalance_every` calls, when
@@ -91,6 +92,12 @@ public:
   void maximum(double* values, int n);
   /// In place: each value becomes its sum over the ranks.
   void sum(double* values, int n) const;
+  /// Every rank's `mine`, concatenated in rank order, on every rank.
+  std::vector<double> all_gather(const std::vector<double>& mine) const;
+  /// Outputs and checkpoints: on rank 0, the whole fluid in one set of arrays (rank 0's
+  /// wall block, with each wall particle's density from the rank that computes it, then
+  /// every rank's own fluid particles in rank order, no ghosts); empty on the others.
+  ParticleArrays<dim> gather(const ParticleArrays<dim>& p) const;
   std::size_t n_ghosts() const { return n_ghosts_; }
 
   int rebalance_every = 100;

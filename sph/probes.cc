@@ -1,6 +1,7 @@
 #include "sph/probes.h"
 
 #include "sph/case_setup.h"
+#include "sph/particle_exchange.h"
 #include "sph/wendland_kernel.h"
 
 #include <algorithm>
@@ -8,6 +9,18 @@
 
 namespace chipflex::sph
 {
+namespace
+{
+/// Over MPI, each rank sums its own particles (ghosts skipped): the sums over the ranks
+/// are the gauge's.
+template <int dim>
+void reduce_sums(const FluidSolver<dim>& fluid, double* sums, int n)
+{
+  if (const auto* exchange = fluid.exchange())
+    exchange->sum(sums, n);
+}
+} // namespace
+
 template <int dim>
 double sample_pressure(const FluidSolver<dim>& fluid, const Eigen::Matrix<double, dim, 1>& x)
 {
@@ -17,6 +30,8 @@ double sample_pressure(const FluidSolver<dim>& fluid, const Eigen::Matrix<double
   double sum_w = 0, sum_pw = 0;
   for (std::size_t i = p.n_boundary; i < p.size(); ++i)
   {
+    if (p.is_ghost(i))
+      continue;
     double r2 = 0;
     for (int d = 0; d < dim; ++d)
       r2 += (p.position[d][i] - x[d]) * (p.position[d][i] - x[d]);
@@ -26,7 +41,9 @@ double sample_pressure(const FluidSolver<dim>& fluid, const Eigen::Matrix<double
     sum_w += vw;
     sum_pw += vw * fluid.pressure(i);
   }
-  return sum_w > 0 ? sum_pw / sum_w : 0.0;
+  double sums[2] = {sum_w, sum_pw};
+  reduce_sums(fluid, sums, 2);
+  return sums[0] > 0 ? sums[1] / sums[0] : 0.0;
 }
 
 template <int dim>
@@ -42,19 +59,34 @@ double sample_water_height(const FluidSolver<dim>& fluid, const Eigen::Matrix<do
     double lateral2, elevation, volume;
   };
   std::vector<Near> near;
-  double lo = 1e300, hi = -1e300;
   for (std::size_t i = p.n_boundary; i < p.size(); ++i)
   {
+    if (p.is_ghost(i))
+      continue;
     double lateral2 = 0;
     for (int d = 0; d < dim; ++d)
       if (d != up)
         lateral2 += (p.position[d][i] - x[d]) * (p.position[d][i] - x[d]);
     if (lateral2 >= 4 * h * h)
       continue;
-    const double z = p.position[up][i];
-    near.push_back({lateral2, z, fluid.particle_mass() / p.density[i]});
-    lo = std::min(lo, z);
-    hi = std::max(hi, z);
+    near.push_back({lateral2, p.position[up][i], fluid.particle_mass() / p.density[i]});
+  }
+  // Over MPI the line crosses any number of slabs: every rank takes all their particles.
+  if (const auto* exchange = fluid.exchange())
+  {
+    std::vector<double> mine;
+    for (const auto& n : near)
+      mine.insert(mine.end(), {n.lateral2, n.elevation, n.volume});
+    const std::vector<double> all = exchange->all_gather(mine);
+    near.clear();
+    for (std::size_t k = 0; k + 2 < all.size(); k += 3)
+      near.push_back({all[k], all[k + 1], all[k + 2]});
+  }
+  double lo = 1e300, hi = -1e300;
+  for (const auto& n : near)
+  {
+    lo = std::min(lo, n.elevation);
+    hi = std::max(hi, n.elevation);
   }
   if (near.empty())
     return x[up];
@@ -91,11 +123,12 @@ double sample_flow_rate(const FluidSolver<2>& fluid, const Eigen::Vector2d& a,
   {
     const Eigen::Vector2d r(p.position[0][i] - a.x(), p.position[1][i] - a.y());
     const double along = r.dot(t), across = r.dot(n);
-    if (along < 0 || along > length || std::abs(across) >= half)
+    if (along < 0 || along > length || std::abs(across) >= half || p.is_ghost(i))
       continue;
     const Eigen::Vector2d v(p.velocity[0][i], p.velocity[1][i]);
     flux += fluid.particle_mass() / p.density[i] * v.dot(n);
   }
+  reduce_sums(fluid, &flux, 1);
   return flux / (2 * half);
 }
 
@@ -109,11 +142,12 @@ double sample_flow_rate(const FluidSolver<3>& fluid, const Eigen::Vector3d& poin
   {
     const Eigen::Vector3d r(p.position[0][i] - point.x(), p.position[1][i] - point.y(),
                             p.position[2][i] - point.z());
-    if (std::abs(r.dot(normal)) >= half)
+    if (std::abs(r.dot(normal)) >= half || p.is_ghost(i))
       continue;
     const Eigen::Vector3d v(p.velocity[0][i], p.velocity[1][i], p.velocity[2][i]);
     flux += fluid.particle_mass() / p.density[i] * v.dot(normal);
   }
+  reduce_sums(fluid, &flux, 1);
   return flux / (2 * half);
 }
 

@@ -6,6 +6,8 @@
 // plane) is the volume flux of the fluid in a slab two particle spacings wide around it,
 // Q = (1 / 2 dp) sum_j V_j v_j . n over the particles in the slab (the slab average of
 // v . n times the section's length or the plane's wetted area).
+// Over MPI every rank calls them (each one sums its own particles, then the ranks add up)
+// and gets the whole fluid's value.
 
 #include "sph/fluid_solver.h"
 
