@@ -73,10 +73,19 @@ void choose_wall_model(CaseBody<dim>& b, const sph::FluidParameters<dim>& fluid)
 template <int dim>
 CoupledSimulation<dim>::CoupledSimulation(const sph::CaseDescription<dim>& fluid_case,
                                           BodyCase<dim> bodies, const std::string& output_directory,
-                                          const ContactCase& contact)
-    : fluid_(fluid_case, output_directory), case_(std::move(bodies)),
+                                          const ContactCase& contact, bool distributed)
+    : fluid_(fluid_case, output_directory, distributed), case_(std::move(bodies)),
       skins_(output_directory, "skins"), started_(std::chrono::steady_clock::now())
 {
+  // Over MPI every rank steps its own copy of each body. The kinds below keep state
+  // outside chipflex's control (a deal.II solver, an FMU) or particles of their own.
+  if (distributed)
+    for (const auto& b : case_.bodies)
+      if (b.kind == "fe" || b.kind == "fmu" || b.kind == "sph solid")
+        throw InputError("bodies, " + b.name, "the " + b.kind +
+                                                  " kind does not run over MPI yet (rigid, "
+                                                  "flexible, chain and moving wall bodies do); "
+                                                  "run one process with --threads N");
   // Coupled momentum exchange is exact only with the symplectic fluid schemes (the
   // Verlet step's velocity update spans two steps): refuse the other rather than
   // silently losing momentum.
@@ -215,7 +224,8 @@ ParticleFrame CoupledSimulation<dim>::frame() const
                       {"fluid_force", dim == 2 ? "N/m" : "N", wall.delivered()},
                       {"contact_force", dim == 2 ? "N/m" : "N", wall.delivered_contact()}}});
   }
-  skins_.write(time(), skins);
+  if (fluid_.writes_outputs())
+    skins_.write(time(), skins);
   return fluid_.frame();
 }
 
@@ -322,9 +332,10 @@ std::vector<double> CoupledSimulation<dim>::probe_values() const
 template <int dim>
 void CoupledSimulation<dim>::save(Hdf5File* file_pointer) const
 {
-  // Bodies do not run over MPI (make_simulation refuses): this is one process.
+  fluid_.save(file_pointer); // over MPI, the ranks' part of the gather
+  if (!file_pointer)
+    return;
   Hdf5File& file = *file_pointer;
-  fluid_.save(file_pointer);
   cosim_->save_bodies(file, "/bodies");
   if (chip_source_)
   {
@@ -421,6 +432,7 @@ std::string CoupledSimulation<dim>::finish(const std::string& output_directory) 
   {
     const auto& body = case_.bodies[b];
     const auto& h = histories_[b];
+    if (fluid_.writes_outputs())
     {
       const std::string path = output_directory + "/" + body.name + "_displacement.csv";
       AtomicOutput output(path);
@@ -461,7 +473,7 @@ std::string CoupledSimulation<dim>::finish(const std::string& output_directory) 
     for (int d = 0; d < dim; ++d)
       line << " max_abs_d" << axis_name[d] << "_mm=" << largest[d] * 1e3;
     line << " dp_mm=" << fluid_.description().fluid.particle_spacing * 1e3
-         << " particles=" << cosim_->fluid().n_particles()
+         << " particles=" << fluid_.n_fluid_particles() + cosim_->fluid().n_boundary()
          << " lost_particles=" << n_lost_particles()
          << " peak_fluid_speed_m_s=" << peak_fluid_speed() << " steps=" << step_count()
          << " wall_s=" << wall << (b + 1 < case_.bodies.size() ? "\n" : "");

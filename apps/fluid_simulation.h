@@ -50,6 +50,8 @@ public:
   /// The wall `id` of fluid() is a body's skin: leave it out of DIR/walls.xdmf.
   void exclude_from_wall_output(int id) { excluded_walls_.push_back(id); }
   const sph::CaseDescription<dim>& description() const { return description_; }
+  /// This process writes the output files (false on the MPI ranks other than 0).
+  bool writes_outputs() const { return writes_; }
 
 private:
   sph::CaseDescription<dim> description_; ///< with derived c0 and domain

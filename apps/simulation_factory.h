@@ -11,7 +11,7 @@
 namespace chipflex::apps
 {
 /// Builds the simulation of case `c`, its outputs going to `dir`. `distributed`: spread
-/// the fluid over the MPI ranks (a fluid without bodies; others are refused).
+/// the fluid over the MPI ranks (bodies stay whole on every rank).
 std::unique_ptr<Simulation> make_simulation(const CaseFile& c, const std::string& dir,
                                             bool distributed = false);
 } // namespace chipflex::apps

@@ -9,6 +9,7 @@
 #include "sph/particle_exchange.h"
 #include "sph/thin_skins.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -217,9 +218,16 @@ void FluidSolver<dim>::finish_setup()
   impl_->setup(parameters_, has_thin_skins());
   if (exchange_)
   {
-    if (!zones_.empty() || has_thin_skins() || parameters_.scheme == TimeScheme::position_verlet)
-      throw InputError("mpi", "open boundaries, thin skins and the position-Verlet scheme do "
-                              "not run over MPI yet; run one process with threads");
+    // Walls that take their density or velocity from the fluid at mirror points reach
+    // further into the fluid than the halo holds.
+    const bool mirrored = parameters_.no_slip_walls ||
+                          std::any_of(walls_.begin(), walls_.end(),
+                                      [](const auto& w) { return w.slides_in_place; });
+    if (!zones_.empty() || has_thin_skins() || parameters_.scheme == TimeScheme::position_verlet ||
+        mirrored)
+      throw InputError("mpi", "open boundaries, thin skins, walls that slide in place, no-slip "
+                              "walls and the position-Verlet scheme do not run over MPI yet; "
+                              "run one process with threads");
     exchange_->initialise(p, parameters_.domain_min, parameters_.domain_max,
                           impl_->grid.cell_size());
   }

@@ -266,6 +266,10 @@ private:
   /// Over MPI, at each step's end: every rank's new losses, largest speed and closest
   /// pair to every rank, so that these records are the run's and the same on all ranks.
   void share_run_records();
+  /// Over MPI, after a force pass: each wall vertex's fluid force summed over the ranks
+  /// (each rank holds its own particles' part), so that every rank's bodies and wall
+  /// outputs see the whole fluid's load.
+  void sum_vertex_forces_over_ranks();
   void transfer_open_boundaries();
   void prescribe_open_boundaries();
   void freeze_open_boundaries();

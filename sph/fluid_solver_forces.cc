@@ -262,12 +262,22 @@ void FluidSolver<dim>::force_pass()
   for (std::size_t w = 0; w < vertex_forces_.size(); ++w)
     for (std::size_t k = 0; k < vertex_forces_[w].size(); ++k)
       vertex_forces_[w][k] = im.guard_forces[w][k];
-  // Dummy-wall reactions, in boundary particle order (deterministic).
+  // Dummy-wall reactions, in boundary particle order (deterministic). Over MPI the ranks
+  // beside a cut both compute the wall particles near it: each reaction counts on the
+  // rank that owns the particle's position, and the ranks' sums add up below.
   for (std::size_t i = 0; i < nb; ++i)
   {
     const auto& a = im.attachments[p.id[i]];
     if (a.wall == WallAttachment<dim>::no_wall)
       continue;
+    if (exchange_)
+    {
+      double x[dim];
+      for (int d = 0; d < dim; ++d)
+        x[d] = p.position[d][i];
+      if (exchange_->decomposition().owner(x) != exchange_->rank())
+        continue;
+    }
     Vector f;
     for (int d = 0; d < dim; ++d)
       f[d] = mass_ * double(p.acceleration[d][i]);
@@ -276,6 +286,8 @@ void FluidSolver<dim>::force_pass()
       vertex_forces_[a.wall][face[k]] += a.weights[k] * f;
   }
   im.lennard_jones.apply(p, nb, n, mass_, vertex_forces_);
+  if (exchange_)
+    sum_vertex_forces_over_ranks();
 
   // A turning frame: -Omega x (Omega x r) - 2 Omega x v - dOmega/dt x r on the fluid (the
   // walls stand still in it). A separate pass, so that the common case keeps its loop.

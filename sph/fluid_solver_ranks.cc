@@ -1,6 +1,8 @@
 // FluidSolver over MPI ranks: the run's records (losses, largest speed, closest pair) made
 // the same on every rank after each step, so that summaries, probes and checkpoints,
-// written by rank 0, are the whole run's and every rank stops on the same step.
+// written by rank 0, are the whole run's and every rank stops on the same step; and the
+// walls' fluid forces summed over the ranks, so that every rank moves its copy of the
+// bodies alike.
 
 #include "sph/fluid_solver_impl.h"
 #include "sph/particle_exchange.h"
@@ -73,6 +75,26 @@ void FluidSolver<dim>::share_run_records()
   lost_shared_ = lost_.size();
 }
 
+template <int dim>
+void FluidSolver<dim>::sum_vertex_forces_over_ranks()
+{
+  std::vector<double> flat;
+  for (const auto& forces : vertex_forces_)
+    for (const auto& f : forces)
+      for (int d = 0; d < dim; ++d)
+        flat.push_back(f[d]);
+  if (flat.empty())
+    return;
+  exchange_->sum(flat.data(), int(flat.size()));
+  std::size_t k = 0;
+  for (auto& forces : vertex_forces_)
+    for (auto& f : forces)
+      for (int d = 0; d < dim; ++d)
+        f[d] = flat[k++];
+}
+
 template void FluidSolver<2>::share_run_records();
 template void FluidSolver<3>::share_run_records();
+template void FluidSolver<2>::sum_vertex_forces_over_ranks();
+template void FluidSolver<3>::sum_vertex_forces_over_ranks();
 } // namespace chipflex::sph

@@ -52,7 +52,8 @@ void LennardJonesWalls<dim>::apply(ParticleArrays<dim>& p, std::size_t first, st
     for (std::size_t i = first; i < last; ++i)
     {
       const std::uint32_t c = p.cell[i];
-      if (bins_.start[c] == bins_.start[c + 1])
+      // Over MPI a ghost's owner applies the wall to it (and counts the reaction).
+      if (bins_.start[c] == bins_.start[c + 1] || p.is_ghost(i))
         continue;
       Vector x;
       for (int d = 0; d < dim; ++d)
