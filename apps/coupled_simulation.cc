@@ -77,15 +77,6 @@ CoupledSimulation<dim>::CoupledSimulation(const sph::CaseDescription<dim>& fluid
     : fluid_(fluid_case, output_directory, distributed), case_(std::move(bodies)),
       skins_(output_directory, "skins"), started_(std::chrono::steady_clock::now())
 {
-  // Over MPI every rank steps its own copy of each body. The kinds below keep state
-  // outside chipflex's control (a deal.II solver, an FMU) or particles of their own.
-  if (distributed)
-    for (const auto& b : case_.bodies)
-      if (b.kind == "fe" || b.kind == "fmu" || b.kind == "sph solid")
-        throw InputError("bodies, " + b.name, "the " + b.kind +
-                                                  " kind does not run over MPI yet (rigid, "
-                                                  "flexible, chain and moving wall bodies do); "
-                                                  "run one process with --threads N");
   // Coupled momentum exchange is exact only with the symplectic fluid schemes (the
   // Verlet step's velocity update spans two steps): refuse the other rather than
   // silently losing momentum.

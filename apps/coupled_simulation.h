@@ -28,8 +28,8 @@ public:
   using Vector = Eigen::Matrix<double, dim, 1>;
 
   /// `distributed`: the fluid over the MPI ranks, the bodies whole on every rank (each
-  /// rank moves its copy alike under the fluid forces summed over the ranks; the fe, fmu
-  /// and sph solid kinds are refused); rank 0 writes.
+  /// rank moves its copy alike under the fluid forces summed over the ranks); rank 0
+  /// writes.
   CoupledSimulation(const sph::CaseDescription<dim>& fluid_case, BodyCase<dim> bodies,
                     const std::string& output_directory, const ContactCase& contact = {},
                     bool distributed = false);

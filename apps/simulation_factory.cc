@@ -4,23 +4,38 @@
 #include "apps/contact_case_keys.h"
 #include "apps/coupled_simulation.h"
 #include "apps/fluid_simulation.h"
+#include "common/input_error.h"
 
 namespace chipflex::apps
 {
+namespace
+{
+template <int dim>
+std::unique_ptr<Simulation> make_coupled(const CaseFile& c, const sph::CaseDescription<dim>& fluid,
+                                         const std::string& dir, bool distributed)
+{
+  const ContactCase contact = read_contact_case(*c.parameters, c.path);
+  BodyCase<dim> bodies = read_body_case<dim>(*c.parameters, c.path, fluid, c.body_subsections);
+  // Over MPI every rank steps its own copy of each body. These kinds keep state outside
+  // chipflex's control (a deal.II solver, an FMU) or particles of their own.
+  if (distributed)
+    for (const auto& b : bodies.bodies)
+      if (b.kind == "fe" || b.kind == "fmu" || b.kind == "sph solid")
+        throw InputError(c.path + ": bodies, " + b.name,
+                         "the " + b.kind +
+                             " kind does not run over MPI yet (rigid, flexible, chain and moving "
+                             "wall bodies do); run one process with --threads N");
+  return std::make_unique<CoupledSimulation<dim>>(fluid, std::move(bodies), dir, contact,
+                                                  distributed);
+}
+} // namespace
+
 std::unique_ptr<Simulation> make_simulation(const CaseFile& c, const std::string& dir,
                                             bool distributed)
 {
   if (n_case_bodies(*c.parameters, c.body_subsections) > 0)
-  {
-    const ContactCase contact = read_contact_case(*c.parameters, c.path);
-    if (c.dimension == 2)
-      return std::make_unique<CoupledSimulation<2>>(
-          c.case_2d, read_body_case<2>(*c.parameters, c.path, c.case_2d, c.body_subsections), dir,
-          contact, distributed);
-    return std::make_unique<CoupledSimulation<3>>(
-        c.case_3d, read_body_case<3>(*c.parameters, c.path, c.case_3d, c.body_subsections), dir,
-        contact, distributed);
-  }
+    return c.dimension == 2 ? make_coupled(c, c.case_2d, dir, distributed)
+                            : make_coupled(c, c.case_3d, dir, distributed);
   if (c.dimension == 2)
     return std::make_unique<FluidSimulation<2>>(c.case_2d, dir, distributed);
   return std::make_unique<FluidSimulation<3>>(c.case_3d, dir, distributed);
