@@ -223,11 +223,10 @@ void FluidSolver<dim>::finish_setup()
     const bool mirrored = parameters_.no_slip_walls ||
                           std::any_of(walls_.begin(), walls_.end(),
                                       [](const auto& w) { return w.slides_in_place; });
-    if (!zones_.empty() || has_thin_skins() || parameters_.scheme == TimeScheme::position_verlet ||
-        mirrored)
-      throw InputError("mpi", "open boundaries, thin skins, walls that slide in place, no-slip "
-                              "walls and the position-Verlet scheme do not run over MPI yet; "
-                              "run one process with threads");
+    if (!zones_.empty() || has_thin_skins() || mirrored)
+      throw InputError("mpi", "open boundaries, thin skins, walls that slide in place and "
+                              "no-slip walls do not run over MPI yet; run one process with "
+                              "threads");
     exchange_->initialise(p, parameters_.domain_min, parameters_.domain_max,
                           impl_->grid.cell_size());
   }

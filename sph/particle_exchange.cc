@@ -23,9 +23,10 @@ double seconds_since(Clock::time_point t0)
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-/// A migrating particle: id, x, v, v_previous, rho, rho_previous, fill.
+/// A migrating particle: id, x, v, v_previous, rho, rho_previous, fill, and the last
+/// force pass's acceleration and density rate (the position-Verlet predictor uses them).
 template <int dim>
-constexpr int migrant_size = 4 + 3 * dim;
+constexpr int migrant_size = 5 + 4 * dim;
 /// A ghost: id, x, v, rho, fill.
 template <int dim>
 constexpr int ghost_size = 3 + 2 * dim;
@@ -74,6 +75,12 @@ void append_record(const double* in, bool migrant, std::uint32_t halo, ParticleA
       p.velocity_previous[d][i] = float(in[1 + 2 * dim + d]);
   p.density_previous[i] = float(in[migrant ? rho_at + 1 : rho_at]);
   p.fill[i] = float(in[rho_at + (migrant ? 2 : 1)]);
+  if (migrant)
+  {
+    for (int d = 0; d < dim; ++d)
+      p.acceleration[d][i] = float(in[4 + 3 * dim + d]);
+    p.density_rate[i] = float(in[4 + 4 * dim]);
+  }
   if (!p.halo.empty())
     p.halo[i] = halo;
 }
@@ -91,6 +98,9 @@ void pack_migrant(const ParticleArrays<dim>& p, std::size_t i, double* out)
   out[1 + 3 * dim] = double(p.density[i]);
   out[2 + 3 * dim] = double(p.density_previous[i]);
   out[3 + 3 * dim] = double(p.fill[i]);
+  for (int d = 0; d < dim; ++d)
+    out[4 + 3 * dim + d] = double(p.acceleration[d][i]);
+  out[4 + 4 * dim] = double(p.density_rate[i]);
 }
 } // namespace
 
@@ -261,28 +271,49 @@ void ParticleExchange<dim>::rebalance(const ParticleArrays<dim>& p)
 }
 
 template <int dim>
-void ParticleExchange<dim>::synchronise_walls(ParticleArrays<dim>& p, const SlabDecomposition& old)
+std::vector<double> ParticleExchange<dim>::wall_states(const ParticleArrays<dim>& p,
+                                                       const SlabDecomposition& slabs,
+                                                       bool everywhere) const
 {
   const std::size_t nb = p.n_boundary;
-  std::vector<double> values(2 * nb + 1, 0.0);
+  std::vector<double> values(3 * nb + 1, 0.0);
   for (std::size_t i = 0; i < nb; ++i)
   {
     double x[dim];
     for (int d = 0; d < dim; ++d)
       x[d] = p.position[d][i];
-    if (old.owner(x) == rank_)
+    if (slabs.owner(x) == rank_)
     {
-      values[2 * i] = double(p.density[i]);
-      values[2 * i + 1] = double(p.density_previous[i]);
+      values[3 * i] = double(p.density[i]);
+      values[3 * i + 1] = double(p.density_previous[i]);
+      values[3 * i + 2] = double(p.density_rate[i]);
     }
   }
   // Exactly one rank contributes each value: the sum is that value.
-  MPI_Allreduce(MPI_IN_PLACE, values.data(), int(2 * nb), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-  for (std::size_t i = 0; i < nb; ++i)
+  if (everywhere)
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(3 * nb), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  else
+    MPI_Reduce(rank_ == 0 ? MPI_IN_PLACE : values.data(), values.data(), int(3 * nb), MPI_DOUBLE,
+               MPI_SUM, 0, MPI_COMM_WORLD);
+  return values;
+}
+
+template <int dim>
+void ParticleExchange<dim>::set_wall_states(const std::vector<double>& values,
+                                            ParticleArrays<dim>& p)
+{
+  for (std::size_t i = 0; i < p.n_boundary; ++i)
   {
-    p.density[i] = float(values[2 * i]);
-    p.density_previous[i] = float(values[2 * i + 1]);
+    p.density[i] = float(values[3 * i]);
+    p.density_previous[i] = float(values[3 * i + 1]);
+    p.density_rate[i] = float(values[3 * i + 2]);
   }
+}
+
+template <int dim>
+void ParticleExchange<dim>::synchronise_walls(ParticleArrays<dim>& p, const SlabDecomposition& old)
+{
+  set_wall_states(wall_states(p, old, true), p);
 }
 
 template <int dim>
@@ -444,17 +475,9 @@ template <int dim>
 ParticleArrays<dim> ParticleExchange<dim>::gather(const ParticleArrays<dim>& p) const
 {
   // The wall densities: each rank computes only those near its slab, so each wall
-  // particle's comes from the rank that owns its position (exactly one: the sum is it).
+  // particle's comes from the rank that owns its position.
   const std::size_t nb = p.n_boundary;
-  std::vector<double> walls(2 * nb + 1, 0.0);
-  for (std::size_t i = 0; i < nb; ++i)
-    if (owner_of(p, i) == rank_)
-    {
-      walls[2 * i] = double(p.density[i]);
-      walls[2 * i + 1] = double(p.density_previous[i]);
-    }
-  MPI_Reduce(rank_ == 0 ? MPI_IN_PLACE : walls.data(), walls.data(), int(2 * nb), MPI_DOUBLE,
-             MPI_SUM, 0, MPI_COMM_WORLD);
+  const std::vector<double> walls = wall_states(p, slabs_, false);
   constexpr int size = migrant_size<dim>;
   std::vector<double> own;
   for (std::size_t i = nb; i < p.size(); ++i)
@@ -481,11 +504,7 @@ ParticleArrays<dim> ParticleExchange<dim>::gather(const ParticleArrays<dim>& p) 
     return whole;
   whole = p;
   whole.resize(nb, !p.position_previous[0].empty(), !p.zone.empty(), !p.skin.empty());
-  for (std::size_t i = 0; i < nb; ++i)
-  {
-    whole.density[i] = float(walls[2 * i]);
-    whole.density_previous[i] = float(walls[2 * i + 1]);
-  }
+  set_wall_states(walls, whole);
   for (int k = 0; k < total; k += size)
     append_record<dim>(&all[std::size_t(k)], true, 0, whole);
   return whole;

@@ -119,6 +119,12 @@ private:
   /// slab (the others' densities go stale), so every wall particle's density is taken
   /// from the rank that owned its position under the `old` cuts.
   void synchronise_walls(ParticleArrays<dim>& p, const SlabDecomposition& old);
+  /// Each wall particle's density, previous density and density rate (3 per particle)
+  /// from the rank that owns its position under `slabs`: on every rank (`everywhere`) or
+  /// on rank 0 only.
+  std::vector<double> wall_states(const ParticleArrays<dim>& p, const SlabDecomposition& slabs,
+                                  bool everywhere) const;
+  static void set_wall_states(const std::vector<double>& values, ParticleArrays<dim>& p);
   void build_ghosts(ParticleArrays<dim>& p);
   /// Sends send[r] to rank r and returns what every rank sent here, in rank order.
   std::vector<double> all_to_all(const std::vector<std::vector<double>>& send,
