@@ -166,8 +166,8 @@ std::string FluidSimulation<dim>::summary() const
   if (const auto* exchange = fluid_->exchange())
   {
     const auto& slabs = exchange->decomposition();
-    s << "MPI: " << exchange->n_ranks() << " ranks, slabs along " << "xyz"[slabs.axis()]
-      << " cut at";
+    s << "MPI: " << exchange->n_ranks() << " ranks, slabs along "
+      << "xyz"[slabs.axis()] << " cut at";
     for (int r = 1; r < exchange->n_ranks(); ++r)
       s << " " << slabs.lower(r);
     s << " m, halo " << slabs.halo_width() << " m\n";

@@ -19,8 +19,8 @@ public:
   /// `distributed`: the fluid is spread over the MPI ranks (mpirun; docs/parallel.md).
   /// Every rank then calls every member, as the ranks' sums and gathers need; outputs are
   /// written by rank 0.
-  FluidSimulation(const sph::CaseDescription<dim>& description,
-                  const std::string& output_directory, bool distributed = false);
+  FluidSimulation(const sph::CaseDescription<dim>& description, const std::string& output_directory,
+                  bool distributed = false);
 
   /// Bodies (coupling/) may add walls and hooks to fluid() until the first frame or step.
   void advance() override { fluid_->step(); }

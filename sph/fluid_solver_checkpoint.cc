@@ -47,7 +47,8 @@ void FluidSolver<dim>::save(Hdf5File* file_pointer, const std::string& group) co
   const_cast<FluidSolver*>(this)->finish_setup();
   // Over MPI the whole fluid, gathered on rank 0; the run's records are every rank's
   // already (share_run_records).
-  const ParticleArrays<dim> gathered = exchange_ ? exchange_->gather(particles_) : ParticleArrays<dim>{};
+  const ParticleArrays<dim> gathered =
+      exchange_ ? exchange_->gather(particles_) : ParticleArrays<dim>{};
   if (!file_pointer)
     return;
   Hdf5File& file = *file_pointer;

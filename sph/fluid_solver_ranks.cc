@@ -28,7 +28,8 @@ void FluidSolver<dim>::share_run_records()
   for (std::size_t k = lost_shared_; k < lost_.size(); ++k)
   {
     const auto& l = lost_[k];
-    mine.insert(mine.end(), {double(l.id), double(l.step), double(int(l.cause)), l.time, l.density});
+    mine.insert(mine.end(),
+                {double(l.id), double(l.step), double(int(l.cause)), l.time, l.density});
     for (int d = 0; d < dim; ++d)
       mine.push_back(l.position[d]);
   }

@@ -497,8 +497,8 @@ ParticleArrays<dim> ParticleExchange<dim>::gather(const ParticleArrays<dim>& p) 
   }
   std::vector<double> all(rank_ == 0 ? std::size_t(total) + 1 : 1);
   own.push_back(0.0);
-  MPI_Gatherv(own.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
-              MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  MPI_Gatherv(own.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
+              0, MPI_COMM_WORLD);
   ParticleArrays<dim> whole;
   if (rank_ != 0)
     return whole;
