@@ -3,7 +3,8 @@
 // takes the warm-up steps (the first steps of a run settle the neighbour lists and the
 // time step), then times the next steps and prints the wall time per step, per fluid
 // particle and step, and the particle count. Compares models on one case: e.g. a body's
-// `wall model`, or the same case on two builds.
+// `wall model`, or the same case on two builds. Under mpirun the fluid is spread over the
+// ranks as in `chipflex run` (docs/parallel.md), and rank 0 prints.
 
 #include "apps/bench_case.h"
 
@@ -11,11 +12,13 @@
 #include "apps/simulation_factory.h"
 #include "common/command_line.h"
 #include "common/input_error.h"
+#include "sph/particle_exchange.h"
 
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <omp.h>
 
 namespace chipflex::apps
@@ -39,10 +42,15 @@ int bench_case(const Arguments& args)
   const long steps = cl.get_int("--steps"), warm_up = cl.get_int("--warm-up");
   if (steps < 1 || warm_up < 0)
     throw InputError("--steps", "needs at least one step timed and no negative warm-up");
+  std::unique_ptr<sph::MpiSession> mpi;
+  if (sph::launched_on_several_ranks())
+    mpi = std::make_unique<sph::MpiSession>();
+  const bool root = !mpi || mpi->rank() == 0;
   const CaseFile case_file = read_case_file(cl.get("CASE.prm"));
   const auto dir = std::filesystem::temp_directory_path() / "chipflex_bench_case";
-  std::filesystem::create_directories(dir);
-  auto sim = make_simulation(case_file, dir.string());
+  if (root)
+    std::filesystem::create_directories(dir);
+  auto sim = make_simulation(case_file, dir.string(), mpi != nullptr);
   for (long k = 0; k < warm_up; ++k)
     sim->advance();
   const auto start = std::chrono::steady_clock::now();
@@ -50,13 +58,17 @@ int bench_case(const Arguments& args)
     sim->advance();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::size_t n_fluid = sim->n_fluid_particles(); // a sum over the ranks
+  if (!root)
+    return 0;
   std::filesystem::remove_all(dir);
   const double per_step = seconds / double(steps);
-  std::cout << "case " << cl.get("CASE.prm") << ": " << sim->n_fluid_particles()
-            << " fluid particles, " << steps << " steps after " << warm_up
-            << " (t = " << sim->time() << " s), " << omp_get_max_threads() << " thread(s)\n"
+  std::cout << "case " << cl.get("CASE.prm") << ": " << n_fluid << " fluid particles, " << steps
+            << " steps after " << warm_up << " (t = " << sim->time() << " s), "
+            << (mpi ? std::to_string(mpi->n_ranks()) + " ranks x " : std::string())
+            << omp_get_max_threads() << " thread(s)\n"
             << "  " << 1e3 * per_step << " ms per step, "
-            << 1e9 * per_step / double(std::max<std::size_t>(1, sim->n_fluid_particles()))
+            << 1e9 * per_step / double(std::max<std::size_t>(1, n_fluid))
             << " ns per fluid particle and step\n";
   return 0;
 }
