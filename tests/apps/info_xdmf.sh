@@ -10,13 +10,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
-python=""
-for p in python3 /usr/bin/python3; do
-  if command -v "$p" > /dev/null 2>&1 && "$p" -c "import h5py" > /dev/null 2>&1; then
-    python=$p
-    break
-  fi
-done
+python=$(sh "$(dirname "$0")/../python_with_h5py.sh")
 [ -n "$python" ] || { echo "SKIP: python3 with h5py not installed"; exit 77; }
 
 "$chipflex" info --help | grep -q -- "--xdmf OUT.xdmf" || fail "info --help lacks --xdmf"

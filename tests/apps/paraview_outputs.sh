@@ -18,15 +18,7 @@ trap 'rm -rf "$dir"' EXIT
 [ -n "$KEEP" ] && trap - EXIT && echo "keeping $dir"
 fail() { echo "FAIL: $*"; exit 1; }
 
-# Python with h5py: Debian's python3-h5py lives beside /usr/bin/python3, which need not
-# be the first python3 on PATH.
-python=""
-for p in python3 /usr/bin/python3; do
-  if command -v "$p" > /dev/null 2>&1 && "$p" -c "import h5py" > /dev/null 2>&1; then
-    python=$p
-    break
-  fi
-done
+python=$(sh "$(dirname "$0")/../python_with_h5py.sh")
 pvpython=""
 command -v pvpython > /dev/null 2>&1 && pvpython=pvpython
 if [ -z "$python" ] && [ -z "$pvpython" ]; then
