@@ -218,17 +218,9 @@ void FluidSolver<dim>::finish_setup()
   impl_->setup(parameters_, has_thin_skins());
   if (exchange_)
   {
-    // Walls that take their density or velocity from the fluid at mirror points reach
-    // further into the fluid than the halo holds.
-    const bool mirrored =
-        parameters_.no_slip_walls ||
-        std::any_of(walls_.begin(), walls_.end(), [](const auto& w) { return w.slides_in_place; });
-    if (!zones_.empty() || has_thin_skins() || mirrored)
-      throw InputError("mpi", "open boundaries, thin skins, walls that slide in place and "
-                              "no-slip walls do not run over MPI yet; run one process with "
-                              "threads");
     exchange_->initialise(p, parameters_.domain_min, parameters_.domain_max,
-                          impl_->grid.cell_size());
+                          impl_->grid.cell_size(),
+                          exchange_halo_width());
   }
 }
 

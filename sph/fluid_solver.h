@@ -266,6 +266,14 @@ private:
   /// Over MPI, at each step's end: every rank's new losses, largest speed and closest
   /// pair to every rank, so that these records are the run's and the same on all ranks.
   void share_run_records();
+  /// How far beyond its slab a rank needs the fluid (ParticleExchange::initialise).
+  double exchange_halo_width() const;
+  /// Over MPI: the inlets' births and the zones' removals of this step summed over the
+  /// ranks, and the first global id of this rank's births (the ranks number theirs in
+  /// rank order). `created`, `removed`: this rank's counts per zone.
+  std::size_t share_open_boundary_counts(std::size_t n_births,
+                                         const std::vector<std::int64_t>& created,
+                                         const std::vector<std::int64_t>& removed);
   /// Over MPI, after a force pass: each wall vertex's fluid force summed over the ranks
   /// (each rank holds its own particles' part), so that every rank's bodies and wall
   /// outputs see the whole fluid's load.

@@ -234,7 +234,8 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
       throw InputError(where, "wrong array size in checkpoint");
     for (std::size_t i = 0; i < n; ++i)
       p.skin[i] = float(skin[i]);
-    impl_->n_guarded = std::size_t(file.read_integer_attribute(group, "n_guarded"));
+    impl_->n_guarded = impl_->n_guarded_shared =
+        std::size_t(file.read_integer_attribute(group, "n_guarded"));
   }
   zone_created_ = created;
   zone_removed_ = removed;
@@ -325,7 +326,8 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
   if (exchange_)
   {
     exchange_->initialise(p, parameters_.domain_min, parameters_.domain_max,
-                          impl_->grid.cell_size());
+                          impl_->grid.cell_size(),
+                          exchange_halo_width());
     lost_shared_ = lost_.size();
   }
 }

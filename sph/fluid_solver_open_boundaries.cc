@@ -12,6 +12,7 @@
 #include "common/input_error.h"
 #include "sph/fluid_solver_impl.h"
 #include "sph/mirror_fit.h"
+#include "sph/particle_exchange.h"
 
 #include <cmath>
 #include <sstream>
@@ -68,8 +69,12 @@ void FluidSolver<dim>::transfer_open_boundaries()
     std::uint8_t zone;
   };
   std::vector<Birth> births;
+  // This step's counts: over MPI the ranks add theirs up below.
+  std::vector<std::int64_t> created(zones_.size(), 0), removed(zones_.size(), 0);
   for (std::size_t i = nb; i < n; ++i)
   {
+    if (p.is_ghost(i)) // last step's copy of another rank's particle: its owner decides
+      continue;
     double x[dim];
     for (int d = 0; d < dim; ++d)
       x[d] = p.position[d][i];
@@ -96,13 +101,13 @@ void FluidSolver<dim>::transfer_open_boundaries()
         else if (depth > zone.thickness()) // pushed back out (cannot happen with u > 0)
         {
           gone.push_back(i);
-          ++zone_removed_[z - 1];
+          ++removed[z - 1];
         }
       }
       else if (depth > zone.thickness()) // out through the far face: outflow
       {
         gone.push_back(i);
-        ++zone_removed_[z - 1];
+        ++removed[z - 1];
       }
       else if (depth <= 0 || !zone.in_section(x)) // back into the fluid
         p.zone[i] = 0;
@@ -120,7 +125,7 @@ void FluidSolver<dim>::transfer_open_boundaries()
         // Fluid flowing deep into a full inlet buffer would overlap its particles: it
         // leaves the run through that zone.
         gone.push_back(i);
-        ++zone_removed_[k];
+        ++removed[k];
       }
       else
       {
@@ -139,17 +144,31 @@ void FluidSolver<dim>::transfer_open_boundaries()
   }
   p.remove(gone);
   for (const auto& b : births)
+    ++created[b.zone - 1];
+  // Ids follow the births: over MPI rank 0's first, then rank 1's, and so on.
+  std::size_t id = n_fluid_created_;
+  if (exchange_)
+    id = share_open_boundary_counts(births.size(), created, removed);
+  else
   {
-    if (n_fluid_created_ >= std::size_t(0xffffffffu))
-      throw SimulationError("the inlets have created 2^32 particles, more than ids hold");
+    n_fluid_created_ += births.size();
+    for (std::size_t k = 0; k < zones_.size(); ++k)
+    {
+      zone_created_[k] += created[k];
+      zone_removed_[k] += removed[k];
+    }
+  }
+  // The counts are the same on every rank, so all stop alike.
+  if (n_fluid_created_ > std::size_t(0xffffffffu))
+    throw SimulationError("the inlets have created 2^32 particles, more than ids hold");
+  for (const auto& b : births)
+  {
     const auto& zone = zones_[b.zone - 1];
     float v[dim];
     for (int d = 0; d < dim; ++d)
       v[d] = 0;
     v[zone.axis] = float(zone.sign * zone.speed(b.x, time_));
-    p.append(b.x, v, b.rho, std::uint32_t(n_fluid_created_), b.zone);
-    ++n_fluid_created_;
-    ++zone_created_[b.zone - 1];
+    p.append(b.x, v, b.rho, std::uint32_t(id++), b.zone);
   }
 }
 
@@ -168,7 +187,7 @@ void FluidSolver<dim>::prescribe_open_boundaries()
   for (std::size_t i = nb; i < n; ++i)
   {
     const std::uint8_t z = p.zone[i] & zone_index_mask;
-    if (!z)
+    if (!z || p.is_ghost(i)) // a ghost takes its owner's values (below)
       continue;
     const auto& zone = zones_[z - 1];
     Vector x;
@@ -201,6 +220,10 @@ void FluidSolver<dim>::prescribe_open_boundaries()
       p.velocity[d][i] = p.velocity_previous[d][i] = float(v[d]);
     p.density[i] = p.density_previous[i] = float(rho);
   }
+  // Over MPI the owners hold the whole fit's fluid (the halo is wide enough,
+  // exchange_halo_width); a ghost's fit would miss part of it.
+  if (exchange_)
+    exchange_->refresh_ghosts(p, true);
 
   // Walls beside an outlet's buffer (a channel's walls reaching into or past it): near the
   // buffer's far face their dummy particles see the buffer's particles arrive from
@@ -261,15 +284,18 @@ OpenBoundaryFlow FluidSolver<dim>::open_boundary_flow(int k) const
   flow.created = zone_created_[k];
   flow.removed = zone_removed_[k];
   const auto& p = particles_;
-  double sum = 0;
+  double sums[2] = {0, 0}; // velocity along the flow, particles
   if (set_up_)
     for (std::size_t i = p.n_boundary; i < p.size(); ++i)
-      if ((p.zone[i] & zone_index_mask) == k + 1)
+      if ((p.zone[i] & zone_index_mask) == k + 1 && !p.is_ghost(i))
       {
-        sum += zone.sign * double(p.velocity[zone.axis][i]);
-        ++flow.buffer_particles;
+        sums[0] += zone.sign * double(p.velocity[zone.axis][i]);
+        sums[1] += 1;
       }
-  flow.mass_flow = mass_ * sum / zone.thickness();
+  if (exchange_) // collective: every rank asks alike
+    exchange_->sum(sums, 2);
+  flow.buffer_particles = std::size_t(sums[1]);
+  flow.mass_flow = mass_ * sums[0] / zone.thickness();
   return flow;
 }
 

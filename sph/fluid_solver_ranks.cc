@@ -2,18 +2,23 @@
 // the same on every rank after each step, so that summaries, probes and checkpoints,
 // written by rank 0, are the whole run's and every rank stops on the same step; and the
 // walls' fluid forces summed over the ranks, so that every rank moves its copy of the
-// bodies alike.
+// bodies alike; the open boundaries' counts summed and their new particles numbered
+// across the ranks; and the halo width that the walls and buffers need.
 
 #include "sph/fluid_solver_impl.h"
 #include "sph/particle_exchange.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace chipflex::sph
 {
 template <int dim>
 void FluidSolver<dim>::share_run_records()
 {
-  // One record per rank: its largest speed and closest pair (with when and where), then
-  // its losses since the last share: [n, then per loss id, step, cause, time, rho, x].
+  // One record per rank: its largest speed and closest pair (with when and where), the
+  // fluid particles its thin skins' guard put back since the last share, then its losses
+  // since the last share: [n, then per loss id, step, cause, time, rho, x].
   constexpr int loss_size = 5 + dim;
   std::vector<double> mine;
   mine.push_back(peak_speed_);
@@ -24,6 +29,7 @@ void FluidSolver<dim>::share_run_records()
   mine.push_back(closest_pair_time_);
   for (int d = 0; d < dim; ++d)
     mine.push_back(closest_pair_position_[d]);
+  mine.push_back(double(impl_->n_guarded - impl_->n_guarded_shared));
   mine.push_back(double(lost_.size() - lost_shared_));
   for (std::size_t k = lost_shared_; k < lost_.size(); ++k)
   {
@@ -35,6 +41,7 @@ void FluidSolver<dim>::share_run_records()
   }
   const std::vector<double> all = exchange_->all_gather(mine);
   lost_.resize(lost_shared_);
+  impl_->n_guarded = impl_->n_guarded_shared;
   // Ranks in order, starting from rank 0's record; on a tie the lowest rank's wins, so
   // every rank keeps the same.
   for (std::size_t at = 0; at < all.size();)
@@ -57,6 +64,8 @@ void FluidSolver<dim>::share_run_records()
         closest_pair_position_[d] = r[2 + d];
     }
     r += 2 + dim;
+    impl_->n_guarded += std::size_t(r[0]);
+    ++r;
     const std::size_t n_lost = std::size_t(r[0]);
     ++r;
     for (std::size_t k = 0; k < n_lost; ++k, r += loss_size)
@@ -74,6 +83,7 @@ void FluidSolver<dim>::share_run_records()
     at = std::size_t(r - all.data());
   }
   lost_shared_ = lost_.size();
+  impl_->n_guarded_shared = impl_->n_guarded;
 }
 
 template <int dim>
@@ -94,8 +104,72 @@ void FluidSolver<dim>::sum_vertex_forces_over_ranks()
         f[d] = flat[k++];
 }
 
+template <int dim>
+double FluidSolver<dim>::exchange_halo_width() const
+{
+  const auto& im = *impl_;
+  const double cell = im.grid.cell_size();
+  // The fluid a rank's own particles see, and the fluid that the wall particles they see
+  // (those within a cell of the slab) sum over.
+  double width = 2 * cell;
+  // Walls that take their velocity or density at a mirror point across their face: a
+  // wall particle within a cell of the slab reads the fluid within 2h of a point twice
+  // its depth away.
+  const bool mirrored =
+      parameters_.no_slip_walls ||
+      std::any_of(walls_.begin(), walls_.end(), [](const auto& w) { return w.slides_in_place; });
+  if (mirrored)
+  {
+    double depth = 0;
+    for (const auto& a : im.attachments)
+      if (a.wall != WallAttachment<dim>::no_wall)
+        depth = std::max(depth, std::abs(a.offset));
+    width = std::max(width, cell + 2 * depth + 2 * h_);
+  }
+  // An open boundary's buffer particle reads the fluid within 2h of its mirror point, up
+  // to twice the buffer's thickness away (its ghosts take the owner's values).
+  for (const auto& zone : zones_)
+    width = std::max(width, 2 * zone.thickness() + 2 * h_);
+  return width;
+}
+
+template <int dim>
+std::size_t FluidSolver<dim>::share_open_boundary_counts(std::size_t n_births,
+                                                         const std::vector<std::int64_t>& created,
+                                                         const std::vector<std::int64_t>& removed)
+{
+  const std::size_t nz = zones_.size();
+  std::vector<double> mine{double(n_births)};
+  for (std::size_t k = 0; k < nz; ++k)
+    mine.push_back(double(created[k]));
+  for (std::size_t k = 0; k < nz; ++k)
+    mine.push_back(double(removed[k]));
+  const std::vector<double> all = exchange_->all_gather(mine);
+  const std::size_t record = 1 + 2 * nz;
+  std::size_t first_id = n_fluid_created_;
+  for (int r = 0; r < exchange_->n_ranks(); ++r)
+  {
+    const double* in = &all[std::size_t(r) * record];
+    if (r < exchange_->rank())
+      first_id += std::size_t(in[0]);
+    n_fluid_created_ += std::size_t(in[0]);
+    for (std::size_t k = 0; k < nz; ++k)
+    {
+      zone_created_[k] += std::int64_t(in[1 + k]);
+      zone_removed_[k] += std::int64_t(in[1 + nz + k]);
+    }
+  }
+  return first_id;
+}
+
 template void FluidSolver<2>::share_run_records();
 template void FluidSolver<3>::share_run_records();
 template void FluidSolver<2>::sum_vertex_forces_over_ranks();
 template void FluidSolver<3>::sum_vertex_forces_over_ranks();
+template double FluidSolver<2>::exchange_halo_width() const;
+template double FluidSolver<3>::exchange_halo_width() const;
+template std::size_t FluidSolver<2>::share_open_boundary_counts(
+    std::size_t, const std::vector<std::int64_t>&, const std::vector<std::int64_t>&);
+template std::size_t FluidSolver<3>::share_open_boundary_counts(
+    std::size_t, const std::vector<std::int64_t>&, const std::vector<std::int64_t>&);
 } // namespace chipflex::sph

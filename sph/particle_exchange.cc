@@ -5,6 +5,7 @@
 #include "sph/particle_exchange.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <limits>
@@ -23,13 +24,49 @@ double seconds_since(Clock::time_point t0)
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-/// A migrating particle: id, x, v, v_previous, rho, rho_previous, fill, and the last
-/// force pass's acceleration and density rate (the position-Verlet predictor uses them).
+/// What travels with every particle record at its end: the open-boundary zone flags, and
+/// the thin-skin id and side (zeros where the case has none).
 template <int dim>
-constexpr int migrant_size = 5 + 4 * dim;
-/// A ghost: id, x, v, rho, fill.
+constexpr int tag_size = 2 + dim;
+/// A migrating particle: id, x, v, v_previous, rho, rho_previous, fill, the last force
+/// pass's acceleration and density rate (the position-Verlet predictor uses them), tags.
 template <int dim>
-constexpr int ghost_size = 3 + 2 * dim;
+constexpr int migrant_tags_at = 5 + 4 * dim;
+template <int dim>
+constexpr int migrant_size = migrant_tags_at<dim> + tag_size<dim>;
+/// A ghost: id, x, v, rho, fill, tags.
+template <int dim>
+constexpr int ghost_tags_at = 3 + 2 * dim;
+template <int dim>
+constexpr int ghost_size = ghost_tags_at<dim> + tag_size<dim>;
+
+/// A wall particle's state that only the rank owning its position computes right:
+/// density, previous density, density rate, and velocity (a no-slip wall's is taken from
+/// the fluid at its mirror point).
+template <int dim>
+constexpr std::size_t wall_state_size = 3 + dim;
+
+template <int dim>
+void pack_tags(const ParticleArrays<dim>& p, std::size_t i, double* out)
+{
+  out[0] = p.zone.empty() ? 0.0 : double(p.zone[i]);
+  out[1] = p.skin.empty() ? 0.0 : double(p.skin[i]);
+  for (int d = 0; d < dim; ++d)
+    out[2 + d] = p.skin.empty() ? 0.0 : double(p.side[d][i]);
+}
+
+template <int dim>
+void unpack_tags(const double* in, ParticleArrays<dim>& p, std::size_t i)
+{
+  if (!p.zone.empty())
+    p.zone[i] = std::uint8_t(in[0]);
+  if (!p.skin.empty())
+  {
+    p.skin[i] = float(in[1]);
+    for (int d = 0; d < dim; ++d)
+      p.side[d][i] = float(in[2 + d]);
+  }
+}
 
 template <int dim>
 void pack_ghost(const ParticleArrays<dim>& p, std::size_t i, double* out)
@@ -42,6 +79,7 @@ void pack_ghost(const ParticleArrays<dim>& p, std::size_t i, double* out)
   }
   out[1 + 2 * dim] = double(p.density[i]);
   out[2 + 2 * dim] = double(p.fill[i]);
+  pack_tags(p, i, out + ghost_tags_at<dim>);
 }
 
 template <int dim>
@@ -54,6 +92,7 @@ void unpack_ghost(const double* in, ParticleArrays<dim>& p, std::size_t i)
   }
   p.density[i] = p.density_previous[i] = float(in[1 + 2 * dim]);
   p.fill[i] = float(in[2 + 2 * dim]);
+  unpack_tags(in + ghost_tags_at<dim>, p, i);
 }
 
 /// Appends a fluid particle with the state of a migrant (or ghost) record.
@@ -81,6 +120,7 @@ void append_record(const double* in, bool migrant, std::uint32_t halo, ParticleA
       p.acceleration[d][i] = float(in[4 + 3 * dim + d]);
     p.density_rate[i] = float(in[4 + 4 * dim]);
   }
+  unpack_tags(in + (migrant ? migrant_tags_at<dim> : ghost_tags_at<dim>), p, i);
   if (!p.halo.empty())
     p.halo[i] = halo;
 }
@@ -101,6 +141,7 @@ void pack_migrant(const ParticleArrays<dim>& p, std::size_t i, double* out)
   for (int d = 0; d < dim; ++d)
     out[4 + 3 * dim + d] = double(p.acceleration[d][i]);
   out[4 + 4 * dim] = double(p.density_rate[i]);
+  pack_tags(p, i, out + migrant_tags_at<dim>);
 }
 } // namespace
 
@@ -153,8 +194,11 @@ ParticleExchange<dim>::ParticleExchange()
 
 template <int dim>
 void ParticleExchange<dim>::initialise(ParticleArrays<dim>& p, const Vector& domain_min,
-                                       const Vector& domain_max, double cell_size)
+                                       const Vector& domain_max, double cell_size,
+                                       double halo_width)
 {
+  if (!(halo_width >= 2 * cell_size))
+    throw std::invalid_argument("ParticleExchange: the halo must span at least two cells");
   // The longest extent of the particles, fluid and walls (a tank or a channel bounds where
   // the fluid goes), not of the domain box, which is often padded for splashes upwards.
   Vector lo = Vector::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -178,7 +222,7 @@ void ParticleExchange<dim>::initialise(ParticleArrays<dim>& p, const Vector& dom
   add_to_histogram(p, axis, 0, p.n_boundary, wall_weight, per_layer);
   slabs_ = SlabDecomposition(
       axis, SlabDecomposition::balanced_cuts(per_layer, origin_, layer_width_, n_ranks_),
-      2 * cell_size);
+      halo_width);
   calls_ = 0;
   n_ghosts_ = 0;
   p.halo.assign(p.size(), 0);
@@ -276,7 +320,8 @@ std::vector<double> ParticleExchange<dim>::wall_states(const ParticleArrays<dim>
                                                        bool everywhere) const
 {
   const std::size_t nb = p.n_boundary;
-  std::vector<double> values(3 * nb + 1, 0.0);
+  constexpr std::size_t size = wall_state_size<dim>;
+  std::vector<double> values(size * nb + 1, 0.0);
   for (std::size_t i = 0; i < nb; ++i)
   {
     double x[dim];
@@ -284,17 +329,21 @@ std::vector<double> ParticleExchange<dim>::wall_states(const ParticleArrays<dim>
       x[d] = p.position[d][i];
     if (slabs.owner(x) == rank_)
     {
-      values[3 * i] = double(p.density[i]);
-      values[3 * i + 1] = double(p.density_previous[i]);
-      values[3 * i + 2] = double(p.density_rate[i]);
+      double* out = &values[size * i];
+      out[0] = double(p.density[i]);
+      out[1] = double(p.density_previous[i]);
+      out[2] = double(p.density_rate[i]);
+      for (int d = 0; d < dim; ++d)
+        out[3 + d] = double(p.velocity[d][i]);
     }
   }
   // Exactly one rank contributes each value: the sum is that value.
   if (everywhere)
-    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(3 * nb), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(size * nb), MPI_DOUBLE, MPI_SUM,
+                  MPI_COMM_WORLD);
   else
-    MPI_Reduce(rank_ == 0 ? MPI_IN_PLACE : values.data(), values.data(), int(3 * nb), MPI_DOUBLE,
-               MPI_SUM, 0, MPI_COMM_WORLD);
+    MPI_Reduce(rank_ == 0 ? MPI_IN_PLACE : values.data(), values.data(), int(size * nb),
+               MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
   return values;
 }
 
@@ -302,11 +351,15 @@ template <int dim>
 void ParticleExchange<dim>::set_wall_states(const std::vector<double>& values,
                                             ParticleArrays<dim>& p)
 {
+  constexpr std::size_t size = wall_state_size<dim>;
   for (std::size_t i = 0; i < p.n_boundary; ++i)
   {
-    p.density[i] = float(values[3 * i]);
-    p.density_previous[i] = float(values[3 * i + 1]);
-    p.density_rate[i] = float(values[3 * i + 2]);
+    const double* in = &values[size * i];
+    p.density[i] = float(in[0]);
+    p.density_previous[i] = float(in[1]);
+    p.density_rate[i] = float(in[2]);
+    for (int d = 0; d < dim; ++d)
+      p.velocity[d][i] = float(in[3 + d]);
   }
 }
 
@@ -409,7 +462,7 @@ void ParticleExchange<dim>::exchange(ParticleArrays<dim>& p)
 }
 
 template <int dim>
-void ParticleExchange<dim>::refresh_ghosts(ParticleArrays<dim>& p)
+void ParticleExchange<dim>::refresh_ghosts(ParticleArrays<dim>& p, bool keep_lost)
 {
   const auto t0 = Clock::now();
   constexpr int size = ghost_size<dim>;
@@ -431,8 +484,12 @@ void ParticleExchange<dim>::refresh_ghosts(ParticleArrays<dim>& p)
     throw std::logic_error("ParticleExchange: the ghosts changed within a step");
   for (std::size_t i = p.n_boundary; i < p.size(); ++i)
     if (p.is_ghost(i))
-      unpack_ghost(&received[std::size_t(p.halo[i] - ParticleArrays<dim>::ghost_flag) * size], p,
-                   i);
+    {
+      const double* record =
+          &received[std::size_t(p.halo[i] - ParticleArrays<dim>::ghost_flag) * size];
+      if (!keep_lost || !std::isnan(record[1]))
+        unpack_ghost(record, p, i);
+    }
   statistics_.halo_seconds += seconds_since(t0);
 }
 

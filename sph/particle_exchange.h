@@ -9,7 +9,8 @@
 //                     cuts now and then, and receives as ghosts the other ranks'
 //                     particles within the halo width of the slab;
 //   refresh_ghosts()  before a later force pass of the same step (the symplectic
-//                     corrector): the owners send the ghosts' new states;
+//                     corrector), and after the open boundaries set their buffers: the
+//                     owners send the ghosts' new states;
 //   maximum()         the time step's maxima over all ranks.
 // A ghost is a fluid particle flagged in ParticleArrays::halo: it takes part in the force
 // pass as a neighbour, and its own sums are skipped (as are those of the wall particles
@@ -81,13 +82,17 @@ public:
   /// along the particles' longest extent (fluid and walls), on the neighbour grid's layers
   /// of width `cell_size` over the domain box, and keeps this rank's own fluid particles.
   /// A restart calls it again with the checkpoint's particles (on any number of ranks).
+  /// `halo_width`: how far beyond its slab a rank needs the fluid, at least two cells
+  /// (sph/slab_decomposition.h); more where values are taken at mirror points.
   void initialise(ParticleArrays<dim>& p, const Vector& domain_min, const Vector& domain_max,
-                  double cell_size);
+                  double cell_size, double halo_width);
   /// Step start: ghosts out, migration, rebalancing (every `rebalance_every` calls, when
   /// the busiest rank holds more than 5 % above the mean), ghosts in.
   void exchange(ParticleArrays<dim>& p);
-  /// The owners' current states into this step's ghosts.
-  void refresh_ghosts(ParticleArrays<dim>& p);
+  /// The owners' current states into this step's ghosts. A ghost whose owner has lost
+  /// the particle since gets NaN, to be dropped at the next sort; with `keep_lost` (after
+  /// the sort) it keeps its state instead, for the rest of this pass.
+  void refresh_ghosts(ParticleArrays<dim>& p, bool keep_lost = false);
   /// In place: each value becomes its maximum over the ranks.
   void maximum(double* values, int n);
   /// In place: each value becomes its sum over the ranks.
@@ -95,7 +100,7 @@ public:
   /// Every rank's `mine`, concatenated in rank order, on every rank.
   std::vector<double> all_gather(const std::vector<double>& mine) const;
   /// Outputs and checkpoints: on rank 0, the whole fluid in one set of arrays (rank 0's
-  /// wall block, with each wall particle's density from the rank that computes it, then
+  /// wall block, with each wall particle's density and velocity from the rank that computes them, then
   /// every rank's own fluid particles in rank order, no ghosts); empty on the others.
   ParticleArrays<dim> gather(const ParticleArrays<dim>& p) const;
   std::size_t n_ghosts() const { return n_ghosts_; }
@@ -119,9 +124,9 @@ private:
   /// slab (the others' densities go stale), so every wall particle's density is taken
   /// from the rank that owned its position under the `old` cuts.
   void synchronise_walls(ParticleArrays<dim>& p, const SlabDecomposition& old);
-  /// Each wall particle's density, previous density and density rate (3 per particle)
-  /// from the rank that owns its position under `slabs`: on every rank (`everywhere`) or
-  /// on rank 0 only.
+  /// Each wall particle's density, previous density, density rate and velocity from the
+  /// rank that owns its position under `slabs`: on every rank (`everywhere`) or on rank 0
+  /// only.
   std::vector<double> wall_states(const ParticleArrays<dim>& p, const SlabDecomposition& slabs,
                                   bool everywhere) const;
   static void set_wall_states(const std::vector<double>& values, ParticleArrays<dim>& p);

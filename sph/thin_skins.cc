@@ -216,10 +216,15 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
   }
   if (n_crossed == 0)
     return 0;
+  std::size_t n_owned = 0;
   for (std::size_t i = first; i < last; ++i)
   {
     if (!crossed_[i - first])
       continue;
+    // Over MPI a ghost is put back as its owner puts the particle back (the same state
+    // and skins give the same move), but its momentum and count are the owner's.
+    const bool ghost = p.is_ghost(i);
+    n_owned += !ghost;
     Vector x, old_side;
     for (int d = 0; d < dim; ++d)
       x[d] = p.position[d][i], old_side[d] = p.side[d][i];
@@ -278,11 +283,11 @@ std::size_t ThinSkins<dim>::label_fluid(ParticleArrays<dim>& p, std::size_t firs
     }
     for (int d = 0; d < dim; ++d)
       p.side[d][i] = float(n[d]);
-    if (dt > 0)
+    if (dt > 0 && !ghost)
       for (int j = 0; j < dim; ++j)
         guard_forces[k.wall][face[j]] -= cp.weights[j] * mass * dv / dt;
   }
-  return n_crossed;
+  return n_owned;
 }
 
 template <int dim>

@@ -10,7 +10,8 @@
 #     0.05; a rank that wrote its stale copies of the other slabs' walls is 17 off);
 #   - the gauges (a pressure in the column, three water heights) within 1 % of their
 #     range, and the same step count to within 1 %.
-# Then a case with bodies (below), and a refused body kind.
+# Then a case with bodies, a channel with open boundaries and no-slip walls (below), and a
+# refused body kind.
 #   usage: mpi_run.sh CHIPFLEX MPIEXEC SOURCE_DIR
 chipflex=$1
 mpiexec=$2
@@ -159,6 +160,65 @@ for run in ("spin2", "spin_restart3"):
           f"p_r80 {q['p_r80_Pa'][-1]:.1f} Pa against {p['p_r80_Pa'][-1]:.1f} Pa, heavy block at "
           f"dx {1e3 * q['heavy_dx_m'][-1]:.2f} mm against {1e3 * p['heavy_dx_m'][-1]:.2f} mm")
     ok &= path < 1e-4 and rms < 0.05 and gauge < 0.02
+sys.exit(0 if ok else 1)
+PY
+
+# Open boundaries and no-slip walls: the Poiseuille channel (a parabolic inlet, a 0 Pa
+# outlet, no-slip plates; 2,160 particles) on 1 and 3 ranks to 0.3 s, and an np-2
+# checkpoint at 0.15 s restarted on 1 rank. The inlets number their new particles across
+# the ranks, so the same ids end in the domain; the fluid's RMS displacement below 0.05
+# dp (measured 4e-6), the no-slip plates' particle velocities (taken from the fluid at
+# their mirror points, on the rank that owns them) within 1 mm/s (measured 1e-6 m/s),
+# the pressure gauges within 1 % of their range, and the inflow and outflow counts equal.
+channel() { # channel NAME RANKS [options]
+  name=$1 ranks=$2
+  shift 2
+  "$mpiexec" -np "$ranks" --oversubscribe "$chipflex" run "$src/cases/channel_2d.prm" \
+    --out "$dir/$name" --threads 1 --end-time 0.3 "$@" > "$dir/$name.log" 2>&1 ||
+    fail "$name: $(tail -3 "$dir/$name.log")"
+}
+channel channel1 1
+channel channel3 3
+channel channel_checkpoint 2 --end-time 0.15 --checkpoint-every 0.15
+cp -r "$dir/channel_checkpoint" "$dir/channel_restart1"
+channel channel_restart1 1 --restart "$dir/channel_checkpoint/checkpoint.h5"
+"$python" - "$dir" <<'PY' || fail "the channel's answers differ"
+import glob, sys
+import h5py, numpy as np
+d = sys.argv[1]
+
+def frame(run):
+    f = h5py.File(sorted(glob.glob(f"{d}/{run}/particles/frame_*.h5"))[-1], "r")
+    out = {}
+    for k, name in ((1, "fluid"), (0, "walls")):
+        m = f["kind"][:] == k
+        order = np.argsort(f["id"][:][m])
+        out[name] = (f["id"][:][m][order], f["position"][:][m][order], f["velocity"][:][m][order])
+    return out
+
+def csv(run):
+    return np.genfromtxt(f"{d}/{run}/probes.csv", delimiter=",", names=True)
+
+ref, p = frame("channel1"), csv("channel1")
+ok = True
+for run in ("channel3", "channel_restart1"):
+    f, q = frame(run), csv(run)
+    if not np.array_equal(f["fluid"][0], ref["fluid"][0]):
+        print(f"{run}: other fluid particles ({len(f['fluid'][0])}) than one process's "
+              f"({len(ref['fluid'][0])})")
+        ok = False
+        continue
+    rms = np.sqrt(((f["fluid"][1] - ref["fluid"][1]) ** 2).sum(axis=1).mean()) / 0.001
+    wall_v = np.abs(f["walls"][2] - ref["walls"][2]).max()
+    n = min(len(p), len(q))
+    gauges = max(np.abs(q[c][:n] - p[c][:n]).max() / np.ptp(p[c])
+                 for c in ("p_inlet_Pa", "p_middle_Pa", "p_outlet_Pa"))
+    counts = (q["inflow_particles"][-1], q["outflow_particles"][-1])
+    print(f"{run}: RMS {rms:.2e} dp, plate velocities within {wall_v:.1e} m/s, gauges within "
+          f"{100 * gauges:.4f} % of their range, inflow/outflow {counts[0]:.0f}/{counts[1]:.0f} "
+          f"against {p['inflow_particles'][-1]:.0f}/{p['outflow_particles'][-1]:.0f}")
+    ok &= rms < 0.05 and wall_v < 1e-3 and gauges < 0.01
+    ok &= counts == (p["inflow_particles"][-1], p["outflow_particles"][-1])
 sys.exit(0 if ok else 1)
 PY
 
