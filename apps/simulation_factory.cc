@@ -16,15 +16,17 @@ std::unique_ptr<Simulation> make_coupled(const CaseFile& c, const sph::CaseDescr
 {
   const ContactCase contact = read_contact_case(*c.parameters, c.path);
   BodyCase<dim> bodies = read_body_case<dim>(*c.parameters, c.path, fluid, c.body_subsections);
-  // Over MPI every rank steps its own copy of each body. These kinds keep state outside
-  // chipflex's control (a deal.II solver, an FMU) or particles of their own.
+  // Over MPI every rank steps its own copy of each body: the fe kind's serial deal.II
+  // solver (MPI_COMM_SELF) and an FMU (unpacked into a folder of each process's own) give
+  // every rank the same numbers. An SPH solid keeps particles of its own, which are not
+  // spread over the ranks.
   if (distributed)
     for (const auto& b : bodies.bodies)
-      if (b.kind == "fe" || b.kind == "fmu" || b.kind == "sph solid")
+      if (b.kind == "sph solid")
         throw InputError(c.path + ": bodies, " + b.name,
                          "the " + b.kind +
-                             " kind does not run over MPI yet (rigid, flexible, chain and moving "
-                             "wall bodies do); run one process with --threads N");
+                             " kind does not run over MPI yet (the others do); run one process "
+                             "with --threads N");
   return std::make_unique<CoupledSimulation<dim>>(fluid, std::move(bodies), dir, contact,
                                                   distributed);
 }

@@ -59,7 +59,7 @@ struct FluidSolver<dim>::Impl
   bool thin_skins_binned = false;
   /// Force of the thin skins' guard on each wall vertex in this pass (sph/thin_skins.h).
   std::vector<std::vector<Eigen::Matrix<double, dim, 1>>> guard_forces;
-  std::size_t n_guarded = 0; ///< fluid particles put back on their side so far
+  std::size_t n_guarded = 0;        ///< fluid particles put back on their side so far
   std::size_t n_guarded_shared = 0; ///< over MPI: of those, the run's as last shared
   /// Boundary particles beside an open boundary's buffer in this pass: their density is
   /// prescribed like the buffer's (prescribe_open_boundaries) and kept (freeze_...).

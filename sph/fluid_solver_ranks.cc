@@ -168,8 +168,10 @@ template void FluidSolver<2>::sum_vertex_forces_over_ranks();
 template void FluidSolver<3>::sum_vertex_forces_over_ranks();
 template double FluidSolver<2>::exchange_halo_width() const;
 template double FluidSolver<3>::exchange_halo_width() const;
-template std::size_t FluidSolver<2>::share_open_boundary_counts(
-    std::size_t, const std::vector<std::int64_t>&, const std::vector<std::int64_t>&);
-template std::size_t FluidSolver<3>::share_open_boundary_counts(
-    std::size_t, const std::vector<std::int64_t>&, const std::vector<std::int64_t>&);
+template std::size_t FluidSolver<2>::share_open_boundary_counts(std::size_t,
+                                                                const std::vector<std::int64_t>&,
+                                                                const std::vector<std::int64_t>&);
+template std::size_t FluidSolver<3>::share_open_boundary_counts(std::size_t,
+                                                                const std::vector<std::int64_t>&,
+                                                                const std::vector<std::int64_t>&);
 } // namespace chipflex::sph

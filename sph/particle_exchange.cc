@@ -19,6 +19,9 @@ namespace
 {
 using Clock = std::chrono::steady_clock;
 
+/// Whether MpiSession's exit handler calls MPI_Finalize (not after an error).
+bool finalise_at_exit = false;
+
 double seconds_since(Clock::time_point t0)
 {
   return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -162,7 +165,18 @@ MpiSession::MpiSession()
   {
     int provided = 0;
     MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-    started_ = true;
+    // MPI_Finalize at exit, after what was set up later has been torn down (exit handlers
+    // and static objects go in the reverse order of their making): the fe body kind's
+    // PETSc session finalises PETSc at exit, which needs MPI still up.
+    finalise_at_exit = true;
+    std::atexit(
+        []
+        {
+          int finalised = 0;
+          MPI_Finalized(&finalised);
+          if (finalise_at_exit && !finalised)
+            MPI_Finalize();
+        });
   }
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &n_ranks_);
@@ -174,11 +188,7 @@ MpiSession::~MpiSession()
   // MPI_Finalize would wait for them. Leaving without it, after `main` has printed the
   // error, makes mpirun end the whole job.
   if (std::uncaught_exceptions() > 0)
-    return;
-  int finalised = 0;
-  MPI_Finalized(&finalised);
-  if (started_ && !finalised)
-    MPI_Finalize();
+    finalise_at_exit = false;
 }
 
 template <int dim>
@@ -339,11 +349,10 @@ std::vector<double> ParticleExchange<dim>::wall_states(const ParticleArrays<dim>
   }
   // Exactly one rank contributes each value: the sum is that value.
   if (everywhere)
-    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(size * nb), MPI_DOUBLE, MPI_SUM,
-                  MPI_COMM_WORLD);
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(size * nb), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
   else
-    MPI_Reduce(rank_ == 0 ? MPI_IN_PLACE : values.data(), values.data(), int(size * nb),
-               MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
+    MPI_Reduce(rank_ == 0 ? MPI_IN_PLACE : values.data(), values.data(), int(size * nb), MPI_DOUBLE,
+               MPI_SUM, 0, MPI_COMM_WORLD);
   return values;
 }
 

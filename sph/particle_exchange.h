@@ -37,7 +37,8 @@ namespace chipflex::sph
 bool launched_on_several_ranks();
 
 /// MPI_Init_thread (funneled: only the thread that steps calls MPI) unless MPI is up
-/// already; MPI_Finalize at the end of the scope if this object started it.
+/// already; MPI_Finalize at exit if this object started it and its scope was not left by
+/// an exception.
 class MpiSession
 {
 public:
@@ -49,7 +50,6 @@ public:
   int n_ranks() const { return n_ranks_; }
 
 private:
-  bool started_ = false;
   int rank_ = 0, n_ranks_ = 1;
 };
 
@@ -100,8 +100,8 @@ public:
   /// Every rank's `mine`, concatenated in rank order, on every rank.
   std::vector<double> all_gather(const std::vector<double>& mine) const;
   /// Outputs and checkpoints: on rank 0, the whole fluid in one set of arrays (rank 0's
-  /// wall block, with each wall particle's density and velocity from the rank that computes them, then
-  /// every rank's own fluid particles in rank order, no ghosts); empty on the others.
+  /// wall block, with each wall particle's density and velocity from the rank that computes them,
+  /// then every rank's own fluid particles in rank order, no ghosts); empty on the others.
   ParticleArrays<dim> gather(const ParticleArrays<dim>& p) const;
   std::size_t n_ghosts() const { return n_ghosts_; }
 
