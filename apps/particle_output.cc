@@ -3,6 +3,7 @@
 #include "apps/array_names.h"
 #include "apps/surface_output.h"
 #include "common/atomic_output.h"
+#include "common/distributed_hdf5_file.h"
 #include "common/hdf5_file.h"
 #include "sph/fluid_solver.h"
 #include "sph/particle_exchange.h"
@@ -18,13 +19,15 @@ namespace chipflex::apps
 template <int dim>
 ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid)
 {
-  // Over MPI the whole fluid, gathered on rank 0; the other ranks' frames are empty.
-  sph::ParticleArrays<dim> gathered;
+  // Over MPI this rank's part: rank 0 the walls and its own fluid, the others their own.
+  sph::ParticleArrays<dim> own;
   if (const auto* exchange = fluid.exchange())
-    gathered = exchange->gather(fluid.particles());
-  const auto& p = fluid.exchange() ? gathered : fluid.particles();
+    own = exchange->own_rows(fluid.particles());
+  const auto& p = fluid.exchange() ? own : fluid.particles();
+  const std::size_t n_walls = fluid.particles().n_boundary;
   ParticleFrame f;
   f.n = p.size();
+  f.distributed = fluid.exchange() != nullptr;
   f.position.assign(3 * f.n, 0.0);
   f.velocity.assign(3 * f.n, 0.0);
   f.pressure.resize(f.n);
@@ -48,7 +51,7 @@ ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid)
     f.kind[i] = std::int64_t(wall ? sph::ParticleKind::boundary : sph::ParticleKind::fluid);
     f.id[i] = std::int64_t(p.id[i]);
     // FluidSolver::global_id, for these arrays (the wall block is the solver's own).
-    f.global_id[i] = std::int64_t(wall ? p.id[i] : p.n_boundary + p.id[i]);
+    f.global_id[i] = std::int64_t(wall ? p.id[i] : n_walls + p.id[i]);
     f.body[i] = wall ? fluid.wall_of(i) : -1;
   }
   return f;
@@ -95,6 +98,17 @@ void ParticleOutput::write(double time, const ParticleFrame& f)
 {
   char name[64];
   std::snprintf(name, sizeof name, "particles/frame_%06zu.h5", frames_.size());
+  if (f.distributed)
+  {
+    const std::size_t n = write_distributed(name, time, f);
+    frames_.push_back({time, n, name, true});
+    if (writes_)
+    {
+      body_names_ = f.body_names;
+      write_xdmf();
+    }
+    return;
+  }
   if (!writes_)
   {
     frames_.push_back({time, f.n, name, true});
@@ -127,6 +141,47 @@ void ParticleOutput::write(double time, const ParticleFrame& f)
   frames_.push_back({time, f.n, name, true});
   body_names_ = f.body_names;
   write_xdmf();
+}
+
+std::size_t ParticleOutput::write_distributed(const std::string& name, double time,
+                                              const ParticleFrame& f)
+{
+  // Written beside the final path and renamed when complete, as AtomicOutput does (its
+  // temporary name holds the process id, which differs between the ranks).
+  const std::string path = directory_ + "/" + name, temporary = path + ".tmp-ranks";
+  std::size_t n = 0;
+  {
+    DistributedHdf5File h5(temporary, f.n);
+    n = h5.rows();
+    h5.write_rows("/position", f.position, 3);
+    h5.write_rows("/velocity", f.velocity, 3);
+    h5.write_rows("/pressure", f.pressure, 1);
+    h5.write_rows("/density", f.density, 1);
+    h5.write_rows("/kind", f.kind, 1);
+    h5.write_rows("/id", f.id, 1);
+    h5.write_rows("/global_id", f.global_id, 1);
+    h5.write_rows("/body", f.body, 1);
+    std::vector<std::int64_t> cells(f.n);
+    for (std::size_t i = 0; i < f.n; ++i)
+      cells[i] = std::int64_t(h5.first_row() + i);
+    h5.write_rows("/cells", cells, 1);
+  } // the collective close: every rank's rows are in the file
+  if (!writes_)
+    return n;
+  {
+    Hdf5File h5(temporary, Hdf5File::Mode::update);
+    h5.write_attribute("/", "time", time);
+    h5.write_attribute("/", "n_particles", std::int64_t(n));
+    h5.write("/body_names", f.body_names);
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error)
+  {
+    std::filesystem::remove(temporary, error);
+    throw std::runtime_error("cannot rename " + temporary + " to " + path);
+  }
+  return n;
 }
 
 void ParticleOutput::write_xdmf() const

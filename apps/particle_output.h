@@ -7,7 +7,9 @@
 // on. Every frame carries its own particle count (particles may be removed during a
 // run); the global id names one particle in every frame and is the XDMF's GlobalId
 // attribute, which ParaView's readers make the point data's global ids. docs/output.md
-// lists the arrays and units.
+// lists the arrays and units. Under mpirun every rank holds its own part of a frame and
+// the ranks write the frame file together through parallel HDF5
+// (common/distributed_hdf5_file.h); rank 0 adds the attributes and the XDMF.
 
 #include <cstdint>
 #include <string>
@@ -23,7 +25,10 @@ namespace chipflex::apps
 {
 struct ParticleFrame
 {
+  /// Particles in this frame; under MPI (`distributed`) this rank's part of the frame:
+  /// on rank 0 the wall particles and its own fluid, on the others their own fluid.
   std::size_t n = 0;
+  bool distributed = false;
   std::vector<double> position, velocity; ///< n x 3 (z = 0 in 2D)
   std::vector<double> pressure, density;
   std::vector<std::int64_t> kind; ///< 0 boundary, 1 fluid
@@ -46,7 +51,8 @@ ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid);
 class ParticleOutput
 {
 public:
-  /// `writes` false (MPI ranks other than 0): keeps the frame list, writes no file.
+  /// `writes` false (MPI ranks other than 0): keeps the frame list and writes only its
+  /// part of distributed frames.
   explicit ParticleOutput(const std::string& directory, bool writes = true);
   /// Restart: keep the frames written up to `time` (their times are read back from
   /// the frame files), so numbering and the XDMF continue.
@@ -58,6 +64,9 @@ public:
 
 private:
   void write_xdmf() const;
+  /// Every rank its part of `f` into the frame file `name` (collective); returns the
+  /// particles of all ranks.
+  std::size_t write_distributed(const std::string& name, double time, const ParticleFrame& f);
   struct Frame
   {
     double time;

@@ -538,20 +538,42 @@ std::vector<double> ParticleExchange<dim>::all_gather(const std::vector<double>&
 }
 
 template <int dim>
-ParticleArrays<dim> ParticleExchange<dim>::gather(const ParticleArrays<dim>& p) const
+ParticleArrays<dim> ParticleExchange<dim>::own_rows(const ParticleArrays<dim>& p) const
 {
-  // The wall densities: each rank computes only those near its slab, so each wall
+  // The wall states: each rank computes only those near its slab, so each wall
   // particle's comes from the rank that owns its position.
   const std::size_t nb = p.n_boundary;
   const std::vector<double> walls = wall_states(p, slabs_, false);
+  ParticleArrays<dim> rows = p;
+  rows.resize(rank_ == 0 ? nb : 0, !p.position_previous[0].empty(), !p.zone.empty(),
+              !p.skin.empty());
+  if (rank_ == 0)
+    set_wall_states(walls, rows);
+  else
+    rows.n_boundary = 0;
   constexpr int size = migrant_size<dim>;
-  std::vector<double> own;
+  double record[size];
   for (std::size_t i = nb; i < p.size(); ++i)
     if (!p.is_ghost(i))
     {
-      own.resize(own.size() + size);
-      pack_migrant(p, i, &own[own.size() - size]);
+      pack_migrant(p, i, record);
+      append_record<dim>(record, true, 0, rows);
     }
+  return rows;
+}
+
+template <int dim>
+ParticleArrays<dim> ParticleExchange<dim>::gather(const ParticleArrays<dim>& p) const
+{
+  ParticleArrays<dim> whole = own_rows(p);
+  constexpr int size = migrant_size<dim>;
+  std::vector<double> own;
+  if (rank_ != 0) // rank 0's own fluid is in `whole` already
+  {
+    own.resize(whole.size() * size);
+    for (std::size_t i = 0; i < whole.size(); ++i)
+      pack_migrant(whole, i, &own[i * size]);
+  }
   int count = int(own.size());
   std::vector<int> counts(n_ranks_), offsets(n_ranks_);
   MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
@@ -565,12 +587,8 @@ ParticleArrays<dim> ParticleExchange<dim>::gather(const ParticleArrays<dim>& p) 
   own.push_back(0.0);
   MPI_Gatherv(own.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
               0, MPI_COMM_WORLD);
-  ParticleArrays<dim> whole;
   if (rank_ != 0)
-    return whole;
-  whole = p;
-  whole.resize(nb, !p.position_previous[0].empty(), !p.zone.empty(), !p.skin.empty());
-  set_wall_states(walls, whole);
+    return {};
   for (int k = 0; k < total; k += size)
     append_record<dim>(&all[std::size_t(k)], true, 0, whole);
   return whole;

@@ -103,6 +103,10 @@ public:
   /// wall block, with each wall particle's density and velocity from the rank that computes them,
   /// then every rank's own fluid particles in rank order, no ghosts); empty on the others.
   ParticleArrays<dim> gather(const ParticleArrays<dim>& p) const;
+  /// Outputs written by every rank together (parallel HDF5): this rank's share of the
+  /// whole fluid, no ghosts: on rank 0 the wall block (states as in gather) and its own
+  /// fluid particles, on the others their own fluid particles (n_boundary 0). Collective.
+  ParticleArrays<dim> own_rows(const ParticleArrays<dim>& p) const;
   std::size_t n_ghosts() const { return n_ghosts_; }
 
   int rebalance_every = 100;

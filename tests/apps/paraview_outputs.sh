@@ -8,10 +8,13 @@
 #     particles (still) from the gate's (moving);
 #  2. water falling out of a tight domain: exit status 3, a frame at the stop time,
 #     probes.csv and summary.txt with status=stopped.
+#  3. with MPIEXEC: the gate of 1. on 2 MPI ranks and restarted on 2, whose particle
+#     frames the ranks write together through parallel HDF5.
 # tests/apps/check_outputs.py checks them with python3 + h5py and, where pvpython is
 # installed, with ParaView's three XDMF readers. Neither available: exit 77 (CTest SKIP).
-#   usage: paraview_outputs.sh CHIPFLEX
+#   usage: paraview_outputs.sh CHIPFLEX [MPIEXEC]
 chipflex=$1
+mpiexec=$2
 here=$(cd "$(dirname "$0")" && pwd)
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
@@ -132,4 +135,13 @@ check() {
 }
 check "$dir/gate" || fail "gate outputs"
 check "$dir/falls" --stopped --no-bodies || fail "stopped run outputs"
+if [ -n "$mpiexec" ]; then
+  "$mpiexec" -np 2 "$chipflex" run "$dir/gate.prm" --out "$dir/gate_np2" --threads 1 \
+    --checkpoint-every 0.03 > "$dir/gate_np2.log" 2>&1 ||
+    fail "gate run on 2 ranks: $(tail -3 "$dir/gate_np2.log")"
+  "$mpiexec" -np 2 "$chipflex" run "$dir/gate.prm" --out "$dir/gate_np2" --threads 1 \
+    --end-time 0.04 --restart "$dir/gate_np2/checkpoint.h5" > "$dir/restart_np2.log" 2>&1 ||
+    fail "gate restart on 2 ranks: $(tail -3 "$dir/restart_np2.log")"
+  check "$dir/gate_np2" || fail "gate outputs on 2 ranks"
+fi
 echo "ok: $(head -1 "$dir/falls/summary.txt")"
