@@ -126,8 +126,8 @@ int run_command(const Arguments& args)
                          "Run an SPH case: particle frames (DIR/particles.xdmf), walls "
                          "(DIR/walls.xdmf), body skins (DIR/skins.xdmf), gauges (DIR/probes.csv), "
                          "DIR/summary.txt, checkpoints (DIR/checkpoint.h5); docs/output.md. Under "
-                         "mpirun -np N the fluid is spread over N ranks (cases without thin skins; "
-                         "docs/parallel.md).");
+                         "mpirun -np N the fluid is spread over N ranks, with OpenMP threads in "
+                         "each (docs/parallel.md).");
   cl.add_positional("CASE.prm", "case file (deal.II ParameterHandler format)", false);
   cl.add_option("--out", "DIR", "output folder (created)");
   cl.add_option("--threads", "N", "OpenMP threads (default: OMP_NUM_THREADS or all cores)");

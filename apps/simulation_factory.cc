@@ -4,7 +4,6 @@
 #include "apps/contact_case_keys.h"
 #include "apps/coupled_simulation.h"
 #include "apps/fluid_simulation.h"
-#include "common/input_error.h"
 
 namespace chipflex::apps
 {
@@ -16,17 +15,10 @@ std::unique_ptr<Simulation> make_coupled(const CaseFile& c, const sph::CaseDescr
 {
   const ContactCase contact = read_contact_case(*c.parameters, c.path);
   BodyCase<dim> bodies = read_body_case<dim>(*c.parameters, c.path, fluid, c.body_subsections);
-  // Over MPI every rank steps its own copy of each body: the fe kind's serial deal.II
-  // solver (MPI_COMM_SELF) and an FMU (unpacked into a folder of each process's own) give
-  // every rank the same numbers. An SPH solid keeps particles of its own, which are not
-  // spread over the ranks.
-  if (distributed)
-    for (const auto& b : bodies.bodies)
-      if (b.kind == "sph solid")
-        throw InputError(c.path + ": bodies, " + b.name,
-                         "the " + b.kind +
-                             " kind does not run over MPI yet (the others do); run one process "
-                             "with --threads N");
+  // Over MPI every rank steps its own copy of each body with the same numbers in the same
+  // order, so the copies stay alike: the fe kind's serial deal.II solver (MPI_COMM_SELF),
+  // an FMU (unpacked into a folder of each process's own) and an SPH solid's particles
+  // (loaded through its skin, as every kind) included.
   return std::make_unique<CoupledSimulation<dim>>(fluid, std::move(bodies), dir, contact,
                                                   distributed);
 }
