@@ -27,8 +27,9 @@ double seconds_since(Clock::time_point t0)
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-/// What travels with every particle record at its end: the open-boundary zone flags, and
-/// the thin-skin id and side (zeros where the case has none).
+/// What travels at the end of every particle record where the case has open boundaries
+/// or thin skins (ParticleExchange::initialise decides, alike on every rank): the zone
+/// flags, the thin-skin id and side.
 template <int dim>
 constexpr int tag_size = 2 + dim;
 /// A migrating particle: id, x, v, v_previous, rho, rho_previous, fill, the last force
@@ -36,12 +37,20 @@ constexpr int tag_size = 2 + dim;
 template <int dim>
 constexpr int migrant_tags_at = 5 + 4 * dim;
 template <int dim>
-constexpr int migrant_size = migrant_tags_at<dim> + tag_size<dim>;
+constexpr int largest_migrant_size = migrant_tags_at<dim> + tag_size<dim>;
+template <int dim>
+int migrant_size(bool tags)
+{
+  return migrant_tags_at<dim> + (tags ? tag_size<dim> : 0);
+}
 /// A ghost: id, x, v, rho, fill, tags.
 template <int dim>
 constexpr int ghost_tags_at = 3 + 2 * dim;
 template <int dim>
-constexpr int ghost_size = ghost_tags_at<dim> + tag_size<dim>;
+int ghost_size(bool tags)
+{
+  return ghost_tags_at<dim> + (tags ? tag_size<dim> : 0);
+}
 
 /// A wall particle's state that only the rank owning its position computes right:
 /// density, previous density, density rate, and velocity (a no-slip wall's is taken from
@@ -72,7 +81,7 @@ void unpack_tags(const double* in, ParticleArrays<dim>& p, std::size_t i)
 }
 
 template <int dim>
-void pack_ghost(const ParticleArrays<dim>& p, std::size_t i, double* out)
+void pack_ghost(const ParticleArrays<dim>& p, std::size_t i, double* out, bool tags)
 {
   out[0] = double(p.id[i]);
   for (int d = 0; d < dim; ++d)
@@ -82,11 +91,12 @@ void pack_ghost(const ParticleArrays<dim>& p, std::size_t i, double* out)
   }
   out[1 + 2 * dim] = double(p.density[i]);
   out[2 + 2 * dim] = double(p.fill[i]);
-  pack_tags(p, i, out + ghost_tags_at<dim>);
+  if (tags)
+    pack_tags(p, i, out + ghost_tags_at<dim>);
 }
 
 template <int dim>
-void unpack_ghost(const double* in, ParticleArrays<dim>& p, std::size_t i)
+void unpack_ghost(const double* in, ParticleArrays<dim>& p, std::size_t i, bool tags)
 {
   for (int d = 0; d < dim; ++d)
   {
@@ -95,12 +105,14 @@ void unpack_ghost(const double* in, ParticleArrays<dim>& p, std::size_t i)
   }
   p.density[i] = p.density_previous[i] = float(in[1 + 2 * dim]);
   p.fill[i] = float(in[2 + 2 * dim]);
-  unpack_tags(in + ghost_tags_at<dim>, p, i);
+  if (tags)
+    unpack_tags(in + ghost_tags_at<dim>, p, i);
 }
 
 /// Appends a fluid particle with the state of a migrant (or ghost) record.
 template <int dim>
-void append_record(const double* in, bool migrant, std::uint32_t halo, ParticleArrays<dim>& p)
+void append_record(const double* in, bool migrant, std::uint32_t halo, ParticleArrays<dim>& p,
+                   bool tags)
 {
   double x[dim];
   float v[dim];
@@ -123,13 +135,14 @@ void append_record(const double* in, bool migrant, std::uint32_t halo, ParticleA
       p.acceleration[d][i] = float(in[4 + 3 * dim + d]);
     p.density_rate[i] = float(in[4 + 4 * dim]);
   }
-  unpack_tags(in + (migrant ? migrant_tags_at<dim> : ghost_tags_at<dim>), p, i);
+  if (tags)
+    unpack_tags(in + (migrant ? migrant_tags_at<dim> : ghost_tags_at<dim>), p, i);
   if (!p.halo.empty())
     p.halo[i] = halo;
 }
 
 template <int dim>
-void pack_migrant(const ParticleArrays<dim>& p, std::size_t i, double* out)
+void pack_migrant(const ParticleArrays<dim>& p, std::size_t i, double* out, bool tags)
 {
   out[0] = double(p.id[i]);
   for (int d = 0; d < dim; ++d)
@@ -144,7 +157,8 @@ void pack_migrant(const ParticleArrays<dim>& p, std::size_t i, double* out)
   for (int d = 0; d < dim; ++d)
     out[4 + 3 * dim + d] = double(p.acceleration[d][i]);
   out[4 + 4 * dim] = double(p.density_rate[i]);
-  pack_tags(p, i, out + migrant_tags_at<dim>);
+  if (tags)
+    pack_tags(p, i, out + migrant_tags_at<dim>);
 }
 } // namespace
 
@@ -224,6 +238,8 @@ void ParticleExchange<dim>::initialise(ParticleArrays<dim>& p, const Vector& dom
       axis = d;
   origin_ = domain_min[axis];
   layer_width_ = cell_size;
+  // Every rank holds the whole case here, so all decide alike.
+  tags_ = !p.zone.empty() || !p.skin.empty();
   n_layers_ = std::size_t(std::ceil((domain_max[axis] - domain_min[axis]) / cell_size));
   n_layers_ = std::max<std::size_t>(n_layers_, 1);
   // Every rank holds the whole fluid here: its own histogram is the global one.
@@ -381,7 +397,7 @@ void ParticleExchange<dim>::synchronise_walls(ParticleArrays<dim>& p, const Slab
 template <int dim>
 void ParticleExchange<dim>::migrate(ParticleArrays<dim>& p)
 {
-  constexpr int size = migrant_size<dim>;
+  const int size = migrant_size<dim>(tags_);
   std::vector<std::vector<double>> send(n_ranks_);
   std::vector<std::size_t> leaving;
   for (std::size_t i = p.n_boundary; i < p.size(); ++i)
@@ -389,22 +405,22 @@ void ParticleExchange<dim>::migrate(ParticleArrays<dim>& p)
     const int owner = owner_of(p, i);
     if (owner < 0 || owner == rank_)
       continue;
-    double record[size];
-    pack_migrant(p, i, record);
+    double record[largest_migrant_size<dim>];
+    pack_migrant(p, i, record, tags_);
     send[owner].insert(send[owner].end(), record, record + size);
     leaving.push_back(i);
   }
   const std::vector<double> arriving = all_to_all(send);
   p.remove(leaving);
   for (std::size_t k = 0; k < arriving.size(); k += size)
-    append_record<dim>(&arriving[k], true, 0, p);
+    append_record<dim>(&arriving[k], true, 0, p, tags_);
   statistics_.migrated += arriving.size() / size;
 }
 
 template <int dim>
 void ParticleExchange<dim>::build_ghosts(ParticleArrays<dim>& p)
 {
-  constexpr int size = ghost_size<dim>;
+  const int size = ghost_size<dim>(tags_);
   std::vector<std::vector<double>> send(n_ranks_);
   entry_first_.assign(1, 0);
   entry_rank_.clear();
@@ -420,7 +436,7 @@ void ParticleExchange<dim>::build_ghosts(ParticleArrays<dim>& p)
                                  entry_rank_.push_back(r);
                                  entry_slot_.push_back(std::uint32_t(send[r].size() / size));
                                  send[r].resize(send[r].size() + size);
-                                 pack_ghost(p, i, &send[r][send[r].size() - size]);
+                                 pack_ghost(p, i, &send[r][send[r].size() - size], tags_);
                                });
     if (entry_rank_.size() > entry_first_.back())
     {
@@ -435,7 +451,7 @@ void ParticleExchange<dim>::build_ghosts(ParticleArrays<dim>& p)
   n_ghosts_ = received.size() / size;
   for (std::size_t j = 0; j < n_ghosts_; ++j)
     append_record<dim>(&received[j * size], false,
-                       ParticleArrays<dim>::ghost_flag + std::uint32_t(j), p);
+                       ParticleArrays<dim>::ghost_flag + std::uint32_t(j), p, tags_);
   statistics_.ghosts += n_ghosts_;
 }
 
@@ -474,7 +490,7 @@ template <int dim>
 void ParticleExchange<dim>::refresh_ghosts(ParticleArrays<dim>& p, bool keep_lost)
 {
   const auto t0 = Clock::now();
-  constexpr int size = ghost_size<dim>;
+  const int size = ghost_size<dim>(tags_);
   // A slot whose particle was removed since (lost) stays NaN: its ghost is dropped at the
   // next sort without being counted as lost here.
   std::vector<std::vector<double>> send(n_ranks_);
@@ -486,7 +502,7 @@ void ParticleExchange<dim>::refresh_ghosts(ParticleArrays<dim>& p, bool keep_los
     if (h == 0 || h >= ParticleArrays<dim>::ghost_flag)
       continue;
     for (std::uint32_t e = entry_first_[h - 1]; e < entry_first_[h]; ++e)
-      pack_ghost(p, i, &send[entry_rank_[e]][std::size_t(entry_slot_[e]) * size]);
+      pack_ghost(p, i, &send[entry_rank_[e]][std::size_t(entry_slot_[e]) * size], tags_);
   }
   const std::vector<double> received = all_to_all(send);
   if (received.size() != n_ghosts_ * size)
@@ -497,7 +513,7 @@ void ParticleExchange<dim>::refresh_ghosts(ParticleArrays<dim>& p, bool keep_los
       const double* record =
           &received[std::size_t(p.halo[i] - ParticleArrays<dim>::ghost_flag) * size];
       if (!keep_lost || !std::isnan(record[1]))
-        unpack_ghost(record, p, i);
+        unpack_ghost(record, p, i, tags_);
     }
   statistics_.halo_seconds += seconds_since(t0);
 }
@@ -551,13 +567,12 @@ ParticleArrays<dim> ParticleExchange<dim>::own_rows(const ParticleArrays<dim>& p
     set_wall_states(walls, rows);
   else
     rows.n_boundary = 0;
-  constexpr int size = migrant_size<dim>;
-  double record[size];
+  double record[largest_migrant_size<dim>];
   for (std::size_t i = nb; i < p.size(); ++i)
     if (!p.is_ghost(i))
     {
-      pack_migrant(p, i, record);
-      append_record<dim>(record, true, 0, rows);
+      pack_migrant(p, i, record, tags_);
+      append_record<dim>(record, true, 0, rows, tags_);
     }
   return rows;
 }
@@ -566,14 +581,15 @@ template <int dim>
 ParticleArrays<dim> ParticleExchange<dim>::gather(const ParticleArrays<dim>& p) const
 {
   ParticleArrays<dim> whole = own_rows(p);
-  constexpr int size = migrant_size<dim>;
+  const int size = migrant_size<dim>(tags_);
   std::vector<double> own;
   if (rank_ != 0) // rank 0's own fluid is in `whole` already
-  {
-    own.resize(whole.size() * size);
-    for (std::size_t i = 0; i < whole.size(); ++i)
-      pack_migrant(whole, i, &own[i * size]);
-  }
+    for (std::size_t i = p.n_boundary; i < p.size(); ++i)
+      if (!p.is_ghost(i))
+      {
+        own.resize(own.size() + size);
+        pack_migrant(p, i, &own[own.size() - size], tags_);
+      }
   int count = int(own.size());
   std::vector<int> counts(n_ranks_), offsets(n_ranks_);
   MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
@@ -590,7 +606,7 @@ ParticleArrays<dim> ParticleExchange<dim>::gather(const ParticleArrays<dim>& p) 
   if (rank_ != 0)
     return {};
   for (int k = 0; k < total; k += size)
-    append_record<dim>(&all[std::size_t(k)], true, 0, whole);
+    append_record<dim>(&all[std::size_t(k)], true, 0, whole, tags_);
   return whole;
 }
 

@@ -151,6 +151,8 @@ private:
   std::vector<std::uint32_t> entry_slot_;
   std::vector<int> send_counts_; ///< ghost records per destination rank
   std::size_t n_ghosts_ = 0;
+  /// Whether the records carry the zone flags and thin-skin sides (the case has them).
+  bool tags_ = false;
   ExchangeStatistics statistics_;
 };
 } // namespace chipflex::sph
