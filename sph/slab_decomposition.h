@@ -7,10 +7,11 @@
 // receives nothing.
 //
 // Ghosts: a particle is copied to every other rank whose slab lies within the halo width
-// of it. The width is two neighbour cells (4h): one cell for the fluid a rank's own
-// particles see, and one more for the wall particles they see, whose densities are
-// formed from the fluid around them (dynamic boundary particles, or the densities taken
-// from the fluid at sliding walls).
+// of it. The width is at least two neighbour cells (4h): one cell for the fluid a rank's
+// own particles see, and one more for the wall particles they see, whose densities are
+// formed from the fluid around them (dynamic boundary particles). Values taken at mirror
+// points (no-slip and sliding walls, open boundaries' buffers) widen it
+// (FluidSolver::exchange_halo_width).
 //
 // The axis is the longest extent of the particles, fluid and walls, at the set-up.
 // Cuts lie on the neighbour grid's cell layers and are chosen from a histogram of the
