@@ -170,7 +170,12 @@ std::string FluidSimulation<dim>::summary() const
       << "xyz"[slabs.axis()] << " cut at";
     for (int r = 1; r < exchange->n_ranks(); ++r)
       s << " " << slabs.lower(r);
-    s << " m, halo " << slabs.halo_width() << " m\n";
+    s << " m, halo " << slabs.halo_width() << " m";
+    // Ranks beside an open boundary's buffer need more (sph/slab_decomposition.h).
+    for (int r = 0; r < exchange->n_ranks(); ++r)
+      if (slabs.halo_width(r) > slabs.halo_width())
+        s << ", rank " << r << " " << slabs.halo_width(r) << " m";
+    s << "\n";
   }
   for (int k = 0; k < fluid_->n_open_boundaries(); ++k)
   {

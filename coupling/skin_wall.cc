@@ -14,6 +14,7 @@ SkinWall<dim>::SkinWall(mbs::SkinBody<dim>& body, const std::string& name, sph::
   surface_.lennard_jones = lennard_jones;
   surface_.fluid_passes = fluid_passes;
   surface_.slides_in_place = body.skin_slides_in_place();
+  surface_.moves = true;
   surface_.faces = body.skin_faces();
   const int n = static_cast<int>(body.n_skin_nodes());
   for (const auto& face : surface_.faces)

@@ -219,7 +219,7 @@ void FluidSolver<dim>::finish_setup()
   if (exchange_)
   {
     exchange_->initialise(p, parameters_.domain_min, parameters_.domain_max,
-                          impl_->grid.cell_size(), exchange_halo_width());
+                          impl_->grid.cell_size(), exchange_halo_needs());
   }
 }
 

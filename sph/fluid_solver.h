@@ -80,6 +80,8 @@ namespace chipflex::sph
 {
 template <int dim>
 class ParticleExchange;
+template <int dim>
+struct HaloNeeds;
 
 enum class ParticleKind
 {
@@ -267,7 +269,7 @@ private:
   /// pair to every rank, so that these records are the run's and the same on all ranks.
   void share_run_records();
   /// How far beyond its slab a rank needs the fluid (ParticleExchange::initialise).
-  double exchange_halo_width() const;
+  HaloNeeds<dim> exchange_halo_needs() const;
   /// Over MPI: the inlets' births and the zones' removals of this step summed over the
   /// ranks, and the first global id of this rank's births (the ranks number theirs in
   /// rank order). `created`, `removed`: this rank's counts per zone.

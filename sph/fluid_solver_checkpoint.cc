@@ -326,7 +326,7 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
   if (exchange_)
   {
     exchange_->initialise(p, parameters_.domain_min, parameters_.domain_max,
-                          impl_->grid.cell_size(), exchange_halo_width());
+                          impl_->grid.cell_size(), exchange_halo_needs());
     lost_shared_ = lost_.size();
   }
 }

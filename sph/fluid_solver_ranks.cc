@@ -7,6 +7,7 @@
 
 #include "sph/fluid_solver_impl.h"
 #include "sph/particle_exchange.h"
+#include "sph/wall_geometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -105,32 +106,46 @@ void FluidSolver<dim>::sum_vertex_forces_over_ranks()
 }
 
 template <int dim>
-double FluidSolver<dim>::exchange_halo_width() const
+HaloNeeds<dim> FluidSolver<dim>::exchange_halo_needs() const
 {
   const auto& im = *impl_;
   const double cell = im.grid.cell_size();
   // The fluid a rank's own particles see, and the fluid that the wall particles they see
   // (those within a cell of the slab) sum over.
-  double width = 2 * cell;
+  HaloNeeds<dim> needs;
+  needs.width = Vector::Constant(2 * cell);
   // Walls that take their velocity or density at a mirror point across their face: a
-  // wall particle within a cell of the slab reads the fluid within 2h of a point twice
-  // its depth away.
+  // wall particle within a cell of the slab reads the fluid within 2h of a point 2 d away
+  // along the face's normal, d its depth. Along the slab axis that is 2 d |n_axis| for a
+  // wall that keeps its faces (one that does not move, or slides in place); a body's may
+  // turn, so its particles count with |n_axis| = 1.
   const bool mirrored =
       parameters_.no_slip_walls ||
       std::any_of(walls_.begin(), walls_.end(), [](const auto& w) { return w.slides_in_place; });
   if (mirrored)
   {
-    double depth = 0;
+    Vector reach = Vector::Zero();
     for (const auto& a : im.attachments)
-      if (a.wall != WallAttachment<dim>::no_wall)
-        depth = std::max(depth, std::abs(a.offset));
-    width = std::max(width, cell + 2 * depth + 2 * h_);
+    {
+      if (a.wall == WallAttachment<dim>::no_wall)
+        continue;
+      const auto& wall = walls_[a.wall];
+      const bool keeps_faces = !wall.moves || wall.slides_in_place;
+      const Vector along =
+          keeps_faces ? Vector(2 * std::abs(a.offset) * face_normal(wall, int(a.face)).cwiseAbs())
+                      : Vector::Constant(2 * std::abs(a.offset));
+      reach = reach.cwiseMax(along);
+    }
+    needs.width = needs.width.cwiseMax(Vector(reach.array() + cell + 2 * h_));
   }
   // An open boundary's buffer particle reads the fluid within 2h of its mirror point, up
-  // to twice the buffer's thickness away (its ghosts take the owner's values).
+  // to twice the buffer's thickness further along the zone's axis: the ranks whose slab
+  // holds part of a buffer need that much (its ghosts take the owner's values).
   for (const auto& zone : zones_)
-    width = std::max(width, 2 * zone.thickness() + 2 * h_);
-  return width;
+    needs.wide.push_back(
+        {zone.axis,
+         {zone.box_min[zone.axis], zone.box_max[zone.axis], 2 * zone.thickness() + 2 * h_}});
+  return needs;
 }
 
 template <int dim>
@@ -166,8 +181,8 @@ template void FluidSolver<2>::share_run_records();
 template void FluidSolver<3>::share_run_records();
 template void FluidSolver<2>::sum_vertex_forces_over_ranks();
 template void FluidSolver<3>::sum_vertex_forces_over_ranks();
-template double FluidSolver<2>::exchange_halo_width() const;
-template double FluidSolver<3>::exchange_halo_width() const;
+template HaloNeeds<2> FluidSolver<2>::exchange_halo_needs() const;
+template HaloNeeds<3> FluidSolver<3>::exchange_halo_needs() const;
 template std::size_t FluidSolver<2>::share_open_boundary_counts(std::size_t,
                                                                 const std::vector<std::int64_t>&,
                                                                 const std::vector<std::int64_t>&);

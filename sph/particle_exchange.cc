@@ -219,10 +219,8 @@ ParticleExchange<dim>::ParticleExchange()
 template <int dim>
 void ParticleExchange<dim>::initialise(ParticleArrays<dim>& p, const Vector& domain_min,
                                        const Vector& domain_max, double cell_size,
-                                       double halo_width)
+                                       const HaloNeeds<dim>& halo)
 {
-  if (!(halo_width >= 2 * cell_size))
-    throw std::invalid_argument("ParticleExchange: the halo must span at least two cells");
   // The longest extent of the particles, fluid and walls (a tank or a channel bounds where
   // the fluid goes), not of the domain box, which is often padded for splashes upwards.
   Vector lo = Vector::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -246,9 +244,16 @@ void ParticleExchange<dim>::initialise(ParticleArrays<dim>& p, const Vector& dom
   std::vector<double> per_layer(n_layers_, 0);
   add_to_histogram(p, axis, p.n_boundary, p.size(), 1.0, per_layer);
   add_to_histogram(p, axis, 0, p.n_boundary, wall_weight, per_layer);
+  const double halo_width = halo.width[axis];
+  if (!(halo_width >= 2 * cell_size))
+    throw std::invalid_argument("ParticleExchange: the halo must span at least two cells");
+  std::vector<WideHalo> wide;
+  for (const auto& [along, stretch] : halo.wide)
+    if (along == axis)
+      wide.push_back(stretch);
   slabs_ = SlabDecomposition(
       axis, SlabDecomposition::balanced_cuts(per_layer, origin_, layer_width_, n_ranks_),
-      halo_width);
+      halo_width, wide);
   calls_ = 0;
   n_ghosts_ = 0;
   p.halo.assign(p.size(), 0);
@@ -336,7 +341,7 @@ void ParticleExchange<dim>::rebalance(const ParticleArrays<dim>& p)
     return;
   slabs_ = SlabDecomposition(
       slabs_.axis(), SlabDecomposition::balanced_cuts(per_layer, origin_, layer_width_, n_ranks_),
-      slabs_.halo_width());
+      slabs_.halo_width(), slabs_.wide_halos());
   ++statistics_.rebalances;
 }
 

@@ -28,6 +28,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace chipflex::sph
@@ -64,6 +65,16 @@ struct ExchangeStatistics
   std::uint64_t rebalances = 0; ///< times the cuts moved
 };
 
+/// How wide a halo a case needs (FluidSolver::exchange_halo_needs), for each axis the
+/// slabs may be cut along: `width[axis]` everywhere, wider on the stretches in `wide`
+/// that lie along that axis.
+template <int dim>
+struct HaloNeeds
+{
+  Eigen::Matrix<double, dim, 1> width;
+  std::vector<std::pair<int, WideHalo>> wide; ///< (axis, stretch)
+};
+
 template <int dim>
 class ParticleExchange
 {
@@ -82,10 +93,10 @@ public:
   /// along the particles' longest extent (fluid and walls), on the neighbour grid's layers
   /// of width `cell_size` over the domain box, and keeps this rank's own fluid particles.
   /// A restart calls it again with the checkpoint's particles (on any number of ranks).
-  /// `halo_width`: how far beyond its slab a rank needs the fluid, at least two cells
+  /// `halo`: how far beyond its slab a rank needs the fluid, at least two cells
   /// (sph/slab_decomposition.h); more where values are taken at mirror points.
   void initialise(ParticleArrays<dim>& p, const Vector& domain_min, const Vector& domain_max,
-                  double cell_size, double halo_width);
+                  double cell_size, const HaloNeeds<dim>& halo);
   /// Step start: ghosts out, migration, rebalancing (every `rebalance_every` calls, when
   /// the busiest rank holds more than 5 % above the mean), ghosts in.
   void exchange(ParticleArrays<dim>& p);

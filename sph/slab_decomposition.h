@@ -28,13 +28,23 @@
 
 namespace chipflex::sph
 {
+/// A stretch [lower, upper] along the slab axis whose ranks need a wider halo: a rank
+/// whose slab overlaps it gets at least `width` (an open boundary's buffer along the axis,
+/// whose particles read the fluid at mirror points up to two buffer depths away).
+struct WideHalo
+{
+  double lower, upper, width;
+};
+
 class SlabDecomposition
 {
 public:
   SlabDecomposition() = default;
   /// `cuts`: the n_ranks - 1 inner bounds, ascending (equal cuts make empty slabs).
-  SlabDecomposition(int axis, const std::vector<double>& cuts, double halo_width)
-      : axis_(axis), halo_(halo_width)
+  /// `halo_width` for every rank, wider where `wide` says.
+  SlabDecomposition(int axis, const std::vector<double>& cuts, double halo_width,
+                    const std::vector<WideHalo>& wide = {})
+      : axis_(axis), halo_(halo_width), wide_(wide)
   {
     bounds_.clear();
     bounds_.push_back(-std::numeric_limits<double>::infinity());
@@ -45,11 +55,19 @@ public:
       bounds_.push_back(cuts[k]);
     }
     bounds_.push_back(std::numeric_limits<double>::infinity());
+    halos_.assign(n_ranks(), halo_width);
+    for (int r = 0; r < n_ranks(); ++r)
+      for (const auto& w : wide_)
+        if (!empty(r) && upper(r) >= w.lower && lower(r) <= w.upper)
+          halos_[r] = std::max(halos_[r], w.width);
   }
 
   int n_ranks() const { return int(bounds_.size()) - 1; }
   int axis() const { return axis_; }
+  /// The halo width of every rank, and of one rank (wider where a WideHalo lies).
   double halo_width() const { return halo_; }
+  double halo_width(int rank) const { return halos_[rank]; }
+  const std::vector<WideHalo>& wide_halos() const { return wide_; }
   double lower(int rank) const { return bounds_[rank]; }
   double upper(int rank) const { return bounds_[rank + 1]; }
   bool empty(int rank) const { return !(lower(rank) < upper(rank)); }
@@ -64,14 +82,14 @@ public:
     return owner_of_coordinate(s);
   }
 
-  /// Calls f(rank) for every rank other than `owner` with a non-empty slab within the
+  /// Calls f(rank) for every rank other than `owner` with a non-empty slab within its
   /// halo width of the point, in ascending rank order.
   template <class F>
   void for_each_ghost_rank(const double* x, int owner, F&& f) const
   {
     const double s = x[axis_];
     for (int r = 0; r < n_ranks(); ++r)
-      if (r != owner && !empty(r) && s >= lower(r) - halo_ && s < upper(r) + halo_)
+      if (r != owner && !empty(r) && s >= lower(r) - halos_[r] && s < upper(r) + halos_[r])
         f(r);
   }
 
@@ -119,6 +137,8 @@ private:
 
   int axis_ = 0;
   double halo_ = 0;
+  std::vector<WideHalo> wide_;
+  std::vector<double> halos_{0.0};
   std::vector<double> bounds_{-std::numeric_limits<double>::infinity(),
                               std::numeric_limits<double>::infinity()};
 };

@@ -70,6 +70,9 @@ struct WallSurface
   /// density is taken from the fluid, not from the continuity sum (docs/sph.md, "Walls that
   /// slide in place").
   bool slides_in_place = false;
+  /// A body's skin, which FluidSolver::move_wall moves (coupling/). A wall that does not
+  /// move keeps its faces: over MPI the halo counts its normals (exchange_halo_needs).
+  bool moves = false;
   /// dummy_particles: layers behind the surface (0: enough to cover the kernel support).
   int dummy_layers = 0;
 };

@@ -114,11 +114,11 @@ PY
 # blocks' paths within 0.1 mm of one process (measured 0.011 mm; dp is 4 mm), the fluid's
 # RMS displacement below 0.05 dp (measured 0.001), the gauge at 80 mm within 2 %.
 run_case() { # run_case CASE.prm NAME RANKS [options]: to 0.3 s unless the options say
-  case_file=$1 name=$2 ranks=$3
+  run_file=$1 run_name=$2 run_ranks=$3
   shift 3
-  "$mpiexec" -np "$ranks" --oversubscribe "$chipflex" run "$case_file" --out "$dir/$name" \
-    --threads 1 --end-time 0.3 "$@" > "$dir/$name.log" 2>&1 ||
-    fail "$name: $(tail -3 "$dir/$name.log")"
+  "$mpiexec" -np "$run_ranks" --oversubscribe "$chipflex" run "$run_file" \
+    --out "$dir/$run_name" --threads 1 --end-time 0.3 "$@" > "$dir/$run_name.log" 2>&1 ||
+    fail "$run_name: $(tail -3 "$dir/$run_name.log")"
 }
 centrifuge() { run_case "$src/cases/centrifuge_2d.prm" "$@"; }
 centrifuge spin1 1
@@ -220,16 +220,16 @@ PY
 # Bodies with state of their own, stepped alike by every rank, in the elastic-gate tank on
 # 1 and 2 ranks: the free end's paths must agree.
 gate_paths() { # gate_paths CASE.prm END_TIME MIN_ROWS TOLERANCE_M
-  name=$(basename "$1" .prm)
+  gate=$(basename "$1" .prm)
   for n in 1 2; do
-    run_case "$dir/gate/$1" "$name$n" "$n" --end-time "$2"
+    run_case "$dir/gate/$1" "$gate$n" "$n" --end-time "$2"
   done
-  paste -d, "$dir/${name}1/gate_displacement.csv" "$dir/${name}2/gate_displacement.csv" |
-    awk -F, -v name="$name" -v rows="$3" -v tolerance="$4" '
+  paste -d, "$dir/${gate}1/gate_displacement.csv" "$dir/${gate}2/gate_displacement.csv" |
+    awk -F, -v name="$gate" -v rows="$3" -v tolerance="$4" '
     NR > 1 { n++; d = $2 - $5; if (d < 0) d = -d; e = $3 - $6; if (e < 0) e = -e
              if (d > m) m = d; if (e > m) m = e; a = $2 < 0 ? -$2 : $2; if (a > moved) moved = a }
     END { printf "%s gate on 2 ranks: free end within %.2g mm of one process over %d rows, largest dx %.3f mm\n", name, 1e3 * m, n, 1e3 * moved
-          exit n < rows || m > tolerance || moved < 1e-5 }' || fail "the $name gate's paths differ"
+          exit n < rows || m > tolerance || moved < 1e-5 }' || fail "the $gate gate's paths differ"
 }
 mkdir "$dir/gate"
 cp "$src/cases/elastic_gate/fe.prm" "$src/cases/elastic_gate/sph_solid.prm" \

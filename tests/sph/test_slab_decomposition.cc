@@ -66,6 +66,30 @@ TEST_CASE("slabs: a slab thinner than the halo sends its particles two ranks on"
   CHECK(ghost_ranks(s, 1.3) == std::vector<int>{1});
 }
 
+TEST_CASE("slabs: the ranks beside a wide stretch (a buffer) get its halo, the others not")
+{
+  // An inlet buffer at [-0.1, 0] in slab 0, an outlet buffer at [3, 3.1] in slab 2; slab
+  // 1 [1, 2) touches neither and keeps 0.25.
+  const SlabDecomposition s(0, {1.0, 2.0}, 0.25, {{-0.1, 0.0, 0.6}, {3.0, 3.1, 0.5}});
+  CHECK(s.halo_width() == 0.25);
+  CHECK(s.halo_width(0) == 0.6);
+  CHECK(s.halo_width(1) == 0.25);
+  CHECK(s.halo_width(2) == 0.5);
+  // Slab 1's particles: a ghost on slab 0 below 1 + 0.6, on slab 2 from 2 - 0.5.
+  CHECK(ghost_ranks(s, 1.45) == std::vector<int>{0});
+  CHECK(ghost_ranks(s, 1.5) == std::vector<int>{0, 2});
+  CHECK(ghost_ranks(s, 1.6) == std::vector<int>{2}); // slab 0's upper end is outside
+  // Slab 0's particles reach slab 1 within its own 0.25 only.
+  CHECK(ghost_ranks(s, 0.8) == std::vector<int>{1});
+  CHECK(ghost_ranks(s, 0.7).empty());
+  // A stretch across a cut widens both slabs beside it.
+  const SlabDecomposition across(0, {1.0, 2.0}, 0.25, {{0.9, 1.1, 0.4}});
+  CHECK(across.halo_width(0) == 0.4);
+  CHECK(across.halo_width(1) == 0.4);
+  CHECK(across.halo_width(2) == 0.25);
+  CHECK(across.wide_halos().size() == 1);
+}
+
 TEST_CASE("slabs: empty slabs own nothing and receive no ghosts")
 {
   // Ranks 1 and 2 have empty slabs [1, 1).
