@@ -120,12 +120,20 @@ run_case() { # run_case CASE.prm NAME RANKS [options]: to 0.3 s unless the optio
     --out "$dir/$run_name" --threads 1 --end-time 0.3 "$@" > "$dir/$run_name.log" 2>&1 ||
     fail "$run_name: $(tail -3 "$dir/$run_name.log")"
 }
-centrifuge() { run_case "$src/cases/centrifuge_2d.prm" "$@"; }
-centrifuge spin1 1
-centrifuge spin2 2
-centrifuge spin_checkpoint 2 --end-time 0.15 --checkpoint-every 0.15
-cp -r "$dir/spin_checkpoint" "$dir/spin_restart3"
-centrifuge spin_restart3 3 --restart "$dir/spin_checkpoint/checkpoint.h5"
+run_and_restart() { # run_and_restart CASE.prm NAME RESTART_RANKS RANKS...: NAMEn on n ranks
+  # for each of RANKS, and NAME_checkpoint (2 ranks, to 0.15 s) restarted on RESTART_RANKS
+  # as NAME_restart
+  series_file=$1 series=$2 restart_ranks=$3
+  shift 3
+  for n in "$@"; do
+    run_case "$series_file" "$series$n" "$n"
+  done
+  run_case "$series_file" "${series}_checkpoint" 2 --end-time 0.15 --checkpoint-every 0.15
+  cp -r "$dir/${series}_checkpoint" "$dir/${series}_restart"
+  run_case "$series_file" "${series}_restart" "$restart_ranks" \
+    --restart "$dir/${series}_checkpoint/checkpoint.h5"
+}
+run_and_restart "$src/cases/centrifuge_2d.prm" spin 3 1 2
 "$python" - "$dir" <<'PY' || fail "the bodies' answers differ"
 import glob, sys
 import h5py, numpy as np
@@ -143,7 +151,7 @@ def csv(path):
 ids, x = fluid("spin1")
 p = csv(f"{d}/spin1/probes.csv")
 ok = True
-for run in ("spin2", "spin_restart3"):
+for run in ("spin2", "spin_restart"):
     i2, x2 = fluid(run)
     if not np.array_equal(ids, i2):
         print(f"{run}: not every fluid particle once")
@@ -171,12 +179,7 @@ PY
 # dp (measured 4e-6), the no-slip plates' particle velocities (taken from the fluid at
 # their mirror points, on the rank that owns them) within 1 mm/s (measured 1e-6 m/s),
 # the pressure gauges within 1 % of their range, and the inflow and outflow counts equal.
-channel() { run_case "$src/cases/channel_2d.prm" "$@"; }
-channel channel1 1
-channel channel3 3
-channel channel_checkpoint 2 --end-time 0.15 --checkpoint-every 0.15
-cp -r "$dir/channel_checkpoint" "$dir/channel_restart1"
-channel channel_restart1 1 --restart "$dir/channel_checkpoint/checkpoint.h5"
+run_and_restart "$src/cases/channel_2d.prm" channel 1 1 3
 "$python" - "$dir" <<'PY' || fail "the channel's answers differ"
 import glob, sys
 import h5py, numpy as np
@@ -196,7 +199,7 @@ def csv(run):
 
 ref, p = frame("channel1"), csv("channel1")
 ok = True
-for run in ("channel3", "channel_restart1"):
+for run in ("channel3", "channel_restart"):
     f, q = frame(run), csv(run)
     if not np.array_equal(f["fluid"][0], ref["fluid"][0]):
         print(f"{run}: other fluid particles ({len(f['fluid'][0])}) than one process's "
