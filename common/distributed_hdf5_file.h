@@ -32,8 +32,7 @@ public:
 
   /// A dataset of rows() x `columns` (one-dimensional for 1 column); `data` holds this
   /// rank's local_rows x columns values, row-major.
-  void write_rows(const std::string& dataset, const std::vector<double>& data,
-                  std::size_t columns);
+  void write_rows(const std::string& dataset, const std::vector<double>& data, std::size_t columns);
   void write_rows(const std::string& dataset, const std::vector<std::int64_t>& data,
                   std::size_t columns);
 
