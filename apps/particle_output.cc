@@ -57,6 +57,24 @@ ParticleFrame particle_frame(const sph::FluidSolver<dim>& fluid)
   return f;
 }
 
+namespace
+{
+/// The frame's per-particle datasets in file order, with their columns: one list for the
+/// one-process and the distributed writers.
+template <class Write>
+void for_each_array(const ParticleFrame& f, Write&& write)
+{
+  write("/position", f.position, 3);
+  write("/velocity", f.velocity, 3);
+  write("/pressure", f.pressure, 1);
+  write("/density", f.density, 1);
+  write("/kind", f.kind, 1);
+  write("/id", f.id, 1);
+  write("/global_id", f.global_id, 1);
+  write("/body", f.body, 1);
+}
+} // namespace
+
 template ParticleFrame particle_frame(const sph::FluidSolver<2>&);
 template ParticleFrame particle_frame(const sph::FluidSolver<3>&);
 
@@ -120,14 +138,11 @@ void ParticleOutput::write(double time, const ParticleFrame& f)
       Hdf5File h5(out.temporary_path(), Hdf5File::Mode::create);
       h5.write_attribute("/", "time", time);
       h5.write_attribute("/", "n_particles", std::int64_t(f.n));
-      h5.write("/position", f.position, {f.n, 3});
-      h5.write("/velocity", f.velocity, {f.n, 3});
-      h5.write("/pressure", f.pressure, {f.n});
-      h5.write("/density", f.density, {f.n});
-      h5.write("/kind", f.kind, {f.n});
-      h5.write("/id", f.id, {f.n});
-      h5.write("/global_id", f.global_id, {f.n});
-      h5.write("/body", f.body, {f.n});
+      for_each_array(
+          f,
+          [&](const char* set, const auto& data, std::size_t columns) {
+            h5.write(set, data, columns > 1 ? std::vector{f.n, columns} : std::vector{f.n});
+          });
       h5.write("/body_names", f.body_names);
       // One vertex cell per particle: ParaView's Xdmf3 readers build no cells from a
       // Polyvertex topology without connectivity (the legacy reader does).
@@ -153,14 +168,8 @@ std::size_t ParticleOutput::write_distributed(const std::string& name, double ti
   {
     DistributedHdf5File h5(temporary, f.n);
     n = h5.rows();
-    h5.write_rows("/position", f.position, 3);
-    h5.write_rows("/velocity", f.velocity, 3);
-    h5.write_rows("/pressure", f.pressure, 1);
-    h5.write_rows("/density", f.density, 1);
-    h5.write_rows("/kind", f.kind, 1);
-    h5.write_rows("/id", f.id, 1);
-    h5.write_rows("/global_id", f.global_id, 1);
-    h5.write_rows("/body", f.body, 1);
+    for_each_array(f, [&](const char* set, const auto& data, std::size_t columns)
+                   { h5.write_rows(set, data, columns); });
     std::vector<std::int64_t> cells(f.n);
     for (std::size_t i = 0; i < f.n; ++i)
       cells[i] = std::int64_t(h5.first_row() + i);
