@@ -10,10 +10,13 @@
 #   VARIANTS (default "rigid flexible"), DP (particle spacing, m; default the case's
 #   0.00075; the open boundaries' layers follow so that layers * dp stays 3 mm),
 #   SCALE (the similitude's speed scale k, default the case files' 4: coolant 50/k l/min,
-#   drill 133/k rad/s, chips' E 210/k^2 GPa, c0 120/k m/s; 1: the full-scale process).
+#   drill 133/k rad/s, chips' E 210/k^2 GPa, c0 120/k m/s, chips released at 0.44/k m/s;
+#   1: the full-scale process), CHIP_REVOLUTIONS and CHIP_FIRST_RELEASE (the chip source
+#   variants, e.g. VARIANTS="rigid_chip_source flexible_chip_source": a chip every this
+#   many revolutions from this time; default the case files' 1 and 0.01 s).
 set -e
 if [ $# -lt 1 ]; then
-  sed -n '2,14p' "$0"
+  sed -n '2,17p' "$0"
   exit 2
 fi
 here=$(cd "$(dirname "$0")" && pwd)
@@ -21,6 +24,7 @@ repo=$(cd "$here/../.." && pwd)
 chipflex=${CHIPFLEX:-$repo/build/bin/chipflex}
 chipflex=$(cd "$(dirname "$chipflex")" && pwd)/$(basename "$chipflex")
 out=$1
+end_time=${2:-}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 cd "$out"
@@ -42,6 +46,7 @@ fi
 omega=$(num "133 / $scale")
 flow=$(num "8.3333e-4 / $scale")
 c0=$(num "120 / $scale")
+chip_speed=$(num "0.44 / $scale")
 # The jam watch's references: rho U^2 / 2 with U over the 90 mm^2 the fluid fills, and
 # the flow fed.
 pref=$(num "0.5 * 870 * ($flow / 9.0e-5)^2")
@@ -49,10 +54,9 @@ layers=""
 if [ -n "$DP" ]; then
   layers=$(awk "BEGIN { printf \"%d\", 0.003 / $DP + 0.5 }")
 fi
-for v in ${VARIANTS:-rigid flexible}; do
-  case_file=$here/flute_3d_$v.prm
-  [ -f "$case_file" ] || { echo "no variant $v ($case_file)" >&2; exit 2; }
-  sed -e "${2:+s|^\(  set end time *=\).*|\1 $2|}" \
+# A case file, scaled, resolved and with END_TIME, into OUT.
+scaled_case() {
+  sed -e "${end_time:+s|^\(  set end time *=\).*|\1 $end_time|}" \
       -e "s|^\(  set angular velocity *=\).*|\1 0, 0, $omega|" \
       -e "s|^\(    set angular velocity *=\).*|\1 0, 0, -$omega|" \
       -e "s|^\(    set flow rate *=\).*|\1 $flow|" \
@@ -60,7 +64,18 @@ for v in ${VARIANTS:-rigid flexible}; do
       -e "s|^\(    set reference pressure *=\).*|\1 $pref|" \
       -e "s|^\(  set speed of sound *=\).*|\1 $c0|" \
       -e "${DP:+s|^\(  set particle spacing *=\).*|\1 $DP|}" \
-      -e "${layers:+s|^\(    set layers *=\).*|\1 $layers|}" "$case_file" > "flute_3d_$v.prm"
+      -e "${layers:+s|^\(    set layers *=\).*|\1 $layers|}" \
+      -e "s|^\(    set velocity *=\).*|\1 0, 0, $chip_speed|" \
+      -e "${CHIP_REVOLUTIONS:+s|^\(    set revolutions *=\).*|\1 $CHIP_REVOLUTIONS|}" \
+      -e "${CHIP_FIRST_RELEASE:+s|^\(    set first release *=\).*|\1 $CHIP_FIRST_RELEASE|}" "$1" > "$2"
+}
+for v in ${VARIANTS:-rigid flexible}; do
+  case_file=$here/flute_3d_$v.prm
+  [ -f "$case_file" ] || { echo "no variant $v ($case_file)" >&2; exit 2; }
+  scaled_case "$case_file" "flute_3d_$v.prm"
+  # A chip-source variant includes its base case: scale that too, beside it.
+  included=$(sed -n 's|^include *||p' "$case_file")
+  [ -z "$included" ] || scaled_case "$here/$included" "$included"
   "$chipflex" run "flute_3d_$v.prm" --out "$v" --threads "${THREADS:-2}" > "$v.log" 2>&1 ||
     { tail -3 "$v.log" >&2; exit 1; }
   grep '^summary:' "$v.log" | sed "s|^summary:|summary: variant=$v|"
