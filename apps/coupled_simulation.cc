@@ -266,7 +266,7 @@ std::vector<std::string> CoupledSimulation<dim>::probe_columns() const
   {
     for (int b : chip_source_->settings().pool)
       columns.push_back(case_.bodies[b].name + "_chip"); // the chip it carries, 0: parked
-    for (const char* c : {"chips_released", "chips_removed", "chips_skipped"})
+    for (const char* c : {"chips_released", "chips_removed", "chips_skipped", "chips_delayed"})
       columns.push_back(c);
   }
   return columns;
@@ -316,6 +316,7 @@ std::vector<double> CoupledSimulation<dim>::probe_values() const
     values.push_back(double(chip_source_->released()));
     values.push_back(double(chip_source_->removed()));
     values.push_back(double(chip_source_->skipped()));
+    values.push_back(double(chip_source_->delayed()));
   }
   return values;
 }
@@ -472,7 +473,8 @@ std::string CoupledSimulation<dim>::finish(const std::string& output_directory) 
   if (chip_source_)
     line << "\nsummary: chip_source released=" << chip_source_->released()
          << " removed=" << chip_source_->removed() << " skipped=" << chip_source_->skipped()
-         << " in_segment=" << chip_source_->released() - chip_source_->removed();
+         << " in_segment=" << chip_source_->released() - chip_source_->removed()
+         << " delayed=" << chip_source_->delayed();
   return line.str();
 }
 

@@ -10,7 +10,11 @@
 // segment: it is counted, put back into its parking state and can be released again as a
 // later chip. So a run produces as many chips as it needs with a pool as large as the
 // number of chips in the segment at once; a release that finds no parked body is skipped
-// and counted. Chips are numbered 1, 2, ... in the order of their release.
+// and counted. A release also waits while a chip released before it is still at the
+// cutting edge (its skin's centre within the pool's largest skin radius of where a
+// released chip's centre starts): put onto it, the new chip would overlap the last one and
+// their contact would fling both. The wait is counted (delayed). Chips are numbered 1, 2,
+// ... in the order of their release.
 
 #include "coupling/co_simulation.h"
 
@@ -47,6 +51,7 @@ public:
   long released() const { return released_; }
   long removed() const { return removed_; }
   long skipped() const { return skipped_; } ///< releases that found no parked body
+  long delayed() const { return delayed_; } ///< releases that waited for the edge to clear
   /// The number of the chip pool body k carries (0: parked).
   long chip_number(int k) const { return chip_[k]; }
   const ChipSourceSettings<dim>& settings() const { return settings_; }
@@ -59,12 +64,18 @@ public:
 private:
   void after_step(double t);
   Vector skin_centre(int body) const;
+  /// Whether a chip in the segment is still within the clearance of the release point.
+  bool edge_occupied() const;
 
   CoSimulation<dim>& cosim_;
   ChipSourceSettings<dim> settings_;
   std::vector<std::vector<double>> parking_; ///< each pool body's state when parked
   std::vector<long> chip_;
   long released_ = 0, removed_ = 0, skipped_ = 0, due_ = 0; ///< due_: releases so far
+  long delayed_ = 0;
+  bool waiting_ = false;  ///< a due release waits for the edge to clear
+  Vector release_centre_; ///< a released chip's skin centre at the release pose
+  double clearance_ = 0;  ///< the pool's largest skin radius about its centre
   mutable std::vector<Vector> nodes_;
 };
 } // namespace chipflex::coupling

@@ -5,9 +5,10 @@
 # that the probes carry the chips' strain energy and the walls' contact torques, that the
 # rigid chips report no deflection and no strain energy while the flexible ones do (they
 # are loaded by the starting flow), and that no fluid is lost. Then the rigid chip-source
-# variant (flute_3d_rigid_chip_source.prm) with its first chip at 0.1 ms: it is released
-# at the cutting edge in its pose and starts to move, the three others stay parked inside
-# the drill body, nothing is lost and the mass balances.
+# variant (flute_3d_rigid_chip_source.prm) with a chip due every 0.14 ms from 0.1 ms: the
+# first is released at the cutting edge in its pose and starts to move; the next waits,
+# since the first is still at the edge (delayed=1), so the three others stay parked inside
+# the drill body; nothing is lost and the mass balances.
 #   usage: drill_flute_3d_smoke.sh CHIPFLEX
 chipflex=$1
 here=$(cd "$(dirname "$0")" && pwd)
@@ -59,14 +60,14 @@ done
 if command -v ffmpeg > /dev/null && command -v h5dump > /dev/null; then
   [ -s "$dir/jam_flexible.mp4" ] && [ -s "$dir/jam_flexible_frames/frame_0000.png" ] || fail "no film"
 fi
-# The chip source in 3D: one release in 0.5 ms (the next is a revolution later; releases
-# closer than a chip's flight off the edge put a chip onto the last one).
-CHIPFLEX=$chipflex THREADS=2 VARIANTS=rigid_chip_source CHIP_FIRST_RELEASE=0.0001 \
+# The chip source in 3D: releases due at 0.1, 0.24 and 0.38 ms. Without the wait the second
+# and third chip land on the first (81 particles lost, the run stopped at 0.46 ms).
+CHIPFLEX=$chipflex THREADS=2 VARIANTS=rigid_chip_source CHIP_FIRST_RELEASE=0.0001 CHIP_REVOLUTIONS=0.00075 \
   sh "$here/../../cases/drill_flute/run_flute.sh" "$dir" 0.0005 > "$dir/source.log" 2>&1 ||
   fail "run_flute.sh (chip source) failed: $(tail -5 "$dir/source.log")"
 grep '^summary: chip_source' "$dir/rigid_chip_source/summary.txt"
-grep -q '^summary: chip_source released=1 removed=0 skipped=0 in_segment=1$' \
-  "$dir/rigid_chip_source/summary.txt" || fail "not one chip released"
+grep -q '^summary: chip_source released=1 removed=0 skipped=0 in_segment=1 delayed=1$' \
+  "$dir/rigid_chip_source/summary.txt" || fail "not one chip released and one delayed"
 grep -q 'lost_particles=0' "$dir/rigid_chip_source.log" || fail "chip source: fluid lost"
 grep -q '^mass_balance: .* residual_particles=0$' "$dir/rigid_chip_source/summary.txt" ||
   fail "chip source: the mass does not balance"
