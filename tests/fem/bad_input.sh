@@ -39,6 +39,11 @@ expect "malformed mesh" "garbage.msh" "$out" "$chipflex" reduce "$dir/garbage.ms
 sed '0,/^\$Nodes/{/^\$Nodes/{n;s/^\([0-9]*\) [0-9]*/\1 10000000000000000/}}' "$dir/gate.msh" > "$dir/huge.msh"
 expect "huge count" "larger than a file of this size" "$out" \
   "$chipflex" reduce "$dir/huge.msh" -o "$out" $rubber
+# A 9-digit largest node tag: gmsh sizes its tag cache by it (gigabytes).
+sed '0,/^\$Nodes/{/^\$Nodes/{n;s/^\([0-9]* [0-9]* [0-9]*\) [0-9]*$/\1 999999999/}}' \
+  "$dir/gate.msh" > "$dir/huge_tag.msh"
+expect "huge node tag" "the count or tag 999999999 is larger" "$out" \
+  "$chipflex" reduce "$dir/huge_tag.msh" -o "$out" $rubber
 sed 's/^1 2 "clamp"$/1 2 clamp/' "$dir/gate.msh" > "$dir/unquoted.msh"
 expect "unquoted physical name" "not a physical name" "$out" \
   "$chipflex" reduce "$dir/unquoted.msh" -o "$out" $rubber
