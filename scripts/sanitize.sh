@@ -3,8 +3,9 @@
 # clang builds the fast unit tests and the libFuzzer targets of the readers of user input
 # with AddressSanitizer and UndefinedBehaviorSanitizer in build_sanitize/, then runs the
 # fast tests there and each fuzz target for FUZZ_SECONDS (default 20) over its corpus.
-# CI's short runs start from a fixed seed (FUZZ_SEED, default 1), so that a finding is the
-# change's, not the luck of the draw, and replays; the long runs take FUZZ_SEED=0 (random).
+# CI's short runs start from a fixed seed (FUZZ_SEED, default 1): the same code explores
+# the same inputs in every CI run, and a finding replays. The long runs take FUZZ_SEED=0
+# (a random seed each run), to find what the fixed seed does not reach.
 #   FUZZ_SECONDS=600 FUZZ_SEED=0 bash scripts/sanitize.sh     the long fuzz runs
 set -euo pipefail
 cd "$(dirname "$0")/.."
