@@ -49,6 +49,22 @@ expect "huge node tag" "the count or tag 999999999 is larger" "$out" \
 sed '0,/^\$Entities/{/^\$Entities/{n;n;s/$/ 7/}}' "$dir/gate.msh" > "$dir/entity.msh"
 expect "damaged entity line" "not a point entity" "$out" \
   "$chipflex" reduce "$dir/entity.msh" -o "$out" $rubber
+# The structure check (meshes/msh_text_check.cc), one damage each: gmsh 4.8 itself would
+# misread these (an allocation by a wrong count, its binary reader on text, a heap
+# corrupted by a damaged section) or silently read something else.
+damaged() { # NAME SED_SCRIPT EXPECTED_IN_MESSAGE
+  sed "$2" "$dir/gate.msh" > "$dir/$1.msh"
+  expect "mesh: $1" "$3" "$out" "$chipflex" reduce "$dir/$1.msh" -o "$out" $rubber
+  rm -f "$out"* # a damage that went through must not fail the cases after it
+}
+damaged binary '2s/^4.1 0 8$/4.1 1 8/' "binary .msh"
+damaged format_40 '2s/^4.1 0 8$/4.0 0 8/' "mesh format 4.0 is not read"
+damaged control_character '5s/$/\x01/' "control character"
+damaged unknown_section 's/^\$\(End\)\{0,1\}PhysicalNames$/$\1NodeData/' "not a section"
+damaged unclosed_section '/^\$EndNodes$/d' "expected \$EndNodes"
+damaged short_element '0,/^\$Elements/{/^\$Elements/{n;n;n;s/ [0-9]* *$//}}' "needs"
+damaged element_count '/^\$Elements/{n;s/^\([0-9]*\) [0-9]*/\1 1/}' "the element blocks hold"
+damaged node_line '0,/^\$Nodes/{/^\$Nodes/{n;n;n;n;s/$/ 0/}}' "coordinates"
 sed 's/^1 2 "clamp"$/1 2 clamp/' "$dir/gate.msh" > "$dir/unquoted.msh"
 expect "unquoted physical name" "not a physical name" "$out" \
   "$chipflex" reduce "$dir/unquoted.msh" -o "$out" $rubber
