@@ -236,38 +236,48 @@ private:
                  " entity, or its counts do not match its tags");
   }
 
-  void nodes_41()
+  /// An MSH 4.1 `$Nodes` or `$Elements` section: `nBlocks nItems minTag maxTag`, then the
+  /// blocks, each read by `block`, which returns how many items it held.
+  template <typename Block>
+  void blocks_41(const std::string& item, Block block)
   {
-    integer_line(4, "the node counts (nBlocks nNodes minTag maxTag)");
-    const long blocks = count(0, "the number of node blocks");
-    const long total = count(1, "the number of nodes");
+    integer_line(4, "the " + item + " counts (blocks, " + item + "s, smallest and largest tag)");
+    const long blocks = count(0, "the number of " + item + " blocks");
+    const long total = count(1, "the number of " + item + "s");
     long seen = 0;
     for (long b = 0; b < blocks; ++b)
-    {
-      integer_line(4, "a node block's header (entityDim entityTag parametric nNodes)");
-      const long dim = integer(0), parametric = integer(2);
-      const long n = count(3, "the number of nodes in a block");
-      if (dim < 0 || dim > 3 || parametric < 0 || parametric > 1)
-        refuse("a node block's dimension or parametric flag is out of range");
-      for (long k = 0; k < n; ++k)
-      {
-        integer_line(1, "a node tag");
-        declare_node(0);
-      }
-      const std::size_t n_coordinates = 3 + std::size_t(parametric * dim);
-      for (long k = 0; k < n; ++k)
-      {
-        if (!next() || tokens_.size() != n_coordinates)
-          refuse("expected a node's " + std::to_string(n_coordinates) + " coordinates");
-        for (const auto& token : tokens_)
-          if (!is_number(token))
-            refuse("not a coordinate: '" + token + "'");
-      }
-      seen += n;
-    }
+      seen += block();
     if (seen != total)
-      refuse("the node blocks hold " + std::to_string(seen) + " nodes, the header says " +
-             std::to_string(total));
+      refuse("the " + item + " blocks hold " + std::to_string(seen) + " " + item +
+             "s, the header says " + std::to_string(total));
+  }
+
+  void nodes_41()
+  {
+    blocks_41("node",
+              [this]
+              {
+                integer_line(4, "a node block's header (entityDim entityTag parametric nNodes)");
+                const long dim = integer(0), parametric = integer(2);
+                const long n = count(3, "the number of nodes in a block");
+                if (dim < 0 || dim > 3 || parametric < 0 || parametric > 1)
+                  refuse("a node block's dimension or parametric flag is out of range");
+                for (long k = 0; k < n; ++k)
+                {
+                  integer_line(1, "a node tag");
+                  declare_node(0);
+                }
+                const std::size_t n_coordinates = 3 + std::size_t(parametric * dim);
+                for (long k = 0; k < n; ++k)
+                {
+                  if (!next() || tokens_.size() != n_coordinates)
+                    refuse("expected a node's " + std::to_string(n_coordinates) + " coordinates");
+                  for (const auto& token : tokens_)
+                    if (!is_number(token))
+                      refuse("not a coordinate: '" + token + "'");
+                }
+                return n;
+              });
   }
 
   void nodes_2()
@@ -301,25 +311,19 @@ private:
 
   void elements_41()
   {
-    integer_line(4, "the element counts (nBlocks nElements minTag maxTag)");
-    const long blocks = count(0, "the number of element blocks");
-    const long total = count(1, "the number of elements");
-    long seen = 0;
-    for (long b = 0; b < blocks; ++b)
-    {
-      integer_line(4, "an element block's header (entityDim entityTag type nElements)");
-      const long type = integer(2);
-      const long n = count(3, "the number of elements in a block");
-      for (long k = 0; k < n; ++k)
-      {
-        integer_line(0, "an element (tag nodes...)");
-        element_line(type, 1);
-      }
-      seen += n;
-    }
-    if (seen != total)
-      refuse("the element blocks hold " + std::to_string(seen) + " elements, the header says " +
-             std::to_string(total));
+    blocks_41("element",
+              [this]
+              {
+                integer_line(4, "an element block's header (entityDim entityTag type nElements)");
+                const long type = integer(2);
+                const long n = count(3, "the number of elements in a block");
+                for (long k = 0; k < n; ++k)
+                {
+                  integer_line(0, "an element (tag nodes...)");
+                  element_line(type, 1);
+                }
+                return n;
+              });
   }
 
   void elements_2()
