@@ -6,10 +6,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <gmsh.h>
 #include <mutex>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
