@@ -91,23 +91,13 @@ private:
     std::ifstream in(path_, std::ios::binary);
     if (!in)
       throw InputError(path_, "cannot open mesh file");
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    const std::string text = buffer.str();
     // A file is its size's worth of entities at most: no sound count or tag exceeds this.
-    limit_ = 16 * double(text.size()) + 1024;
-    std::size_t start = 0;
-    while (start < text.size())
-    {
-      std::size_t end = text.find('\n', start);
-      if (end == std::string::npos)
-        end = text.size();
-      std::string line = text.substr(start, end - start);
+    in.seekg(0, std::ios::end);
+    limit_ = 16 * double(in.tellg()) + 1024;
+    in.seekg(0);
+    for (std::string line; std::getline(in, line); lines_.push_back(line))
       while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t'))
         line.pop_back();
-      lines_.push_back(line);
-      start = end + 1;
-    }
   }
 
   bool next()
@@ -210,10 +200,10 @@ private:
         return false;
     for (int list = 0; list < (point ? 1 : 2); ++list)
     {
-      if (at >= tokens_.size() || !is_integer(tokens_[at]) || tokens_[at][0] == '-')
+      if (at >= tokens_.size() || !is_integer(tokens_[at]))
         return false;
       const long n = integer(at);
-      if (n > long(tokens_.size() - at - 1))
+      if (n < 0 || n > long(tokens_.size() - at - 1))
         return false;
       for (long k = 1; k <= n; ++k)
         if (!is_integer(tokens_[at + std::size_t(k)]))
