@@ -7,6 +7,7 @@
 #include "fem/svk_reduced_forces.h"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -146,7 +147,14 @@ void ModalReduction<dim>::compute_normal_modes(ReductionTimings& timings)
     throw InputError("--modes", "asks for " + std::to_string(n_modes) +
                                     " modes; the mesh has only " + std::to_string(n_free) +
                                     " free DoFs");
-  auto solution = solve_eigenproblem(body.stiffness_matrix, body.mass_matrix, n_wanted, target,
+  // A free body's rigid modes are told from the elastic ones by the gap to the first elastic
+  // eigenvalue, and the second shift below needs a clearly elastic one: with only one or
+  // two elastic modes asked for, a slender chip's rigid eigenvalues are not resolved
+  // against them. Solve for at least as many elastic modes as rigid ones and keep those
+  // asked for.
+  const unsigned int n_solved =
+      n_rigid ? std::min<unsigned int>(n_rigid + std::max(n_modes, n_rigid), n_free - 1) : n_wanted;
+  auto solution = solve_eigenproblem(body.stiffness_matrix, body.mass_matrix, n_solved, target,
                                      layout, body.node_block_size);
   timings.factorisation = solution.factorisation_seconds;
   timings.eigen_solve = solution.solve_seconds;
@@ -167,7 +175,7 @@ void ModalReduction<dim>::compute_normal_modes(ReductionTimings& timings)
     if (lowest_elastic > 0 && -target > lowest_elastic)
     {
       target = -1e-2 * lowest_elastic;
-      solution = solve_eigenproblem(body.stiffness_matrix, body.mass_matrix, n_wanted, target,
+      solution = solve_eigenproblem(body.stiffness_matrix, body.mass_matrix, n_solved, target,
                                     layout, body.node_block_size);
       timings.factorisation += solution.factorisation_seconds;
       timings.eigen_solve += solution.solve_seconds;
