@@ -51,6 +51,16 @@ Material steel()
 {
   return {2.1e11, 0.3, 7850, false};
 }
+
+/// The reduction of a free steel body meshed in `mesh_file` to `n_modes` elastic modes.
+ReductionSettings steel_body(const std::string& mesh_file, unsigned int n_modes)
+{
+  ReductionSettings s;
+  s.mesh_file = mesh_file;
+  s.material = steel();
+  s.n_modes = n_modes;
+  return s;
+}
 } // namespace
 
 TEST_CASE("chip meshes: volume of every shape within 0.5 % of the exact value", "[fem][chip]")
@@ -74,10 +84,7 @@ TEST_CASE("chip meshes: volume of every shape within 0.5 % of the exact value", 
     CHECK(mesh.face_groups.count("start") == (name == "ring" ? 0u : 1u));
     CHECK(mesh.face_groups.count("end") == (name == "ring" ? 0u : 1u));
 
-    ReductionSettings s;
-    s.mesh_file = path;
-    s.material = steel();
-    s.n_modes = 1;
+    ReductionSettings s = steel_body(path, 1);
     const auto body = reduce_body(s);
     // The ends are the sections at the centre curve's start and end: all their nodes lie
     // within half the section's diagonal of the centre point there.
@@ -181,10 +188,7 @@ TEST_CASE("free ring: in-plane bending n = 2, 3 within 1 % of ring theory", "[fe
   spec.width = 0.5e-3;
   spec.thickness = 1e-3;
   spec.size = 1.25e-3;
-  ReductionSettings s;
-  s.mesh_file = chip_mesh(spec, "ring");
-  s.material = steel();
-  s.n_modes = 8;
+  ReductionSettings s = steel_body(chip_mesh(spec, "ring"), 8);
   const double R = spec.curl_radius, A = spec.width * spec.thickness,
                I = spec.thickness * std::pow(spec.width, 3) / 12;
   auto theory = [&](int n)
@@ -286,10 +290,7 @@ TEST_CASE("free helical chip: six rigid modes, exact mass properties", "[fem][ch
   // Two turns, R = 3 mm, pitch 2 mm, 2 x 0.2 mm section, 1 mm elements (160 hexahedra).
   const auto spec = chip(Shape::helical);
   const std::string path = chip_mesh(spec, "helix");
-  ReductionSettings s;
-  s.mesh_file = path;
-  s.material = steel();
-  s.n_modes = 2;
+  ReductionSettings s = steel_body(path, 2);
   // The reduction itself requires six rigid modes (|lambda| < 1e-4 of the first elastic).
   const auto reduced = reduce_body(s);
   const double first_elastic = std::pow(2 * M_PI * reduced.frequencies_hz[0], 2);
@@ -473,11 +474,9 @@ TEST_CASE("second-order gmsh meshes of every cell kind stay curved", "[fem][chip
                                                   {2, false, M_PI * (1e-4 - 2.5e-5)},
                                                   {2, true, M_PI * (1e-4 - 2.5e-5)}})
   {
-    ReductionSettings s;
-    s.mesh_file = curved_mesh(dim, quads);
-    s.material = steel();
+    // A free body: the reduction checks its rigid modes are at zero.
+    ReductionSettings s = steel_body(curved_mesh(dim, quads), 2);
     s.material.density = 1;
-    s.n_modes = 2; // a free body: the reduction checks its rigid modes are at zero
     const double curved = reduce_body(s).mass;
     s.straight_sided = true;
     const double faceted = reduce_body(s).mass;
@@ -492,10 +491,8 @@ TEST_CASE("second-order gmsh meshes of every cell kind stay curved", "[fem][chip
   }
   // Incomplete second-order cells have no node in the middle of their faces: rejected with
   // the curved geometry, read straight-sided on request.
-  ReductionSettings s;
-  s.material = steel(); // so that the throw below is the mesh's
-  s.mesh_file = curved_mesh(2, true, false);
-  s.n_modes = 2;
+  // A valid material, so that the throw below is the mesh's.
+  ReductionSettings s = steel_body(curved_mesh(2, true, false), 2);
   CHECK_THROWS_AS(reduce_body(s), InputError);
   s.straight_sided = true;
   CHECK_NOTHROW(reduce_body(s));
@@ -510,10 +507,7 @@ TEST_CASE("free ribbon chip: one or two elastic modes reduce as the first of mor
   spec.thickness = 0.1e-3;
   spec.size = 0.5e-3;
   const std::string path = chip_mesh(spec, "ribbon");
-  ReductionSettings s;
-  s.mesh_file = path;
-  s.material = steel();
-  s.n_modes = 4;
+  ReductionSettings s = steel_body(path, 4);
   const auto four = reduce_body(s);
   for (const unsigned int n : {1u, 2u})
   {
