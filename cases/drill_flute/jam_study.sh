@@ -39,14 +39,15 @@ for i in $intervals; do
                  i, v["jammed"], (v["jammed"] == "yes" ? v["time_to_jam_s"] : "-"), v["p_tip_Pa_largest_ratio"], c["released"], c["skipped"] }
   ' "$out/interval_$i/summary.txt"
 done
-# The tip's loss coefficient against time, as the jam watch sees it (the 4 ms trailing mean
-# of p_tip over its reference): OUT/interval_I/zeta.csv per run and OUT/jam_study.png.
+# The tip's loss coefficient against time, as the jam watch sees it (the trailing mean of
+# p_tip over its averaging time, divided by its reference): OUT/interval_I/zeta.csv per run and OUT/jam_study.png.
 plot=""
 for i in $intervals; do
   d=$out/interval_$i
   [ -f "$d/probes.csv" ] || continue
   ref=$(sed -n 's/^jam: p_tip_Pa_reference=\([^ ]*\).*/\1/p' "$d/summary.txt")
-  awk -F, -v ref="${ref:-1740}" -v window=0.004 '
+  window=$(sed -n 's/^jam: .* averaging_s=\([^ ]*\).*/\1/p' "$d/summary.txt")
+  awk -F, -v ref="${ref:-1740}" -v window="${window:-0.004}" '
     NR == 1 { for (k = 1; k <= NF; ++k) col[$k] = k; first = 2
               print "time_s,zeta_mean,q_barrier_m2_s"; next }
     { t[NR] = $col["time_s"]; p[NR] = $col["p_tip_Pa"]; sum += p[NR]
