@@ -34,37 +34,30 @@ bool is_number(const std::string& token)
 /// prisms, pyramids and higher orders anyway.
 int nodes_of_type(long type)
 {
-  switch (type)
+  struct TypeNodes
   {
-  case 15:
-    return 1; // point
-  case 1:
-    return 2; // line
-  case 8:
-    return 3; // quadratic line
-  case 2:
-    return 3; // triangle
-  case 9:
-    return 6; // quadratic triangle
-  case 3:
-    return 4; // quadrilateral
-  case 10:
-    return 9; // quadratic quadrilateral (9 nodes)
-  case 16:
-    return 8; // quadratic quadrilateral (8 nodes)
-  case 4:
-    return 4; // tetrahedron
-  case 11:
-    return 10; // quadratic tetrahedron
-  case 5:
-    return 8; // hexahedron
-  case 12:
-    return 27; // quadratic hexahedron (27 nodes)
-  case 17:
-    return 20; // quadratic hexahedron (20 nodes)
-  default:
-    return 0;
-  }
+    long type;
+    int nodes;
+  };
+  static constexpr TypeNodes table[] = {
+      {15, 1},  // point
+      {1, 2},   // line
+      {8, 3},   // quadratic line
+      {2, 3},   // triangle
+      {9, 6},   // quadratic triangle
+      {3, 4},   // quadrilateral
+      {10, 9},  // quadratic quadrilateral (9 nodes)
+      {16, 8},  // quadratic quadrilateral (8 nodes)
+      {4, 4},   // tetrahedron
+      {11, 10}, // quadratic tetrahedron
+      {5, 8},   // hexahedron
+      {12, 27}, // quadratic hexahedron (27 nodes)
+      {17, 20}, // quadratic hexahedron (20 nodes)
+  };
+  for (const auto& entry : table)
+    if (entry.type == type)
+      return entry.nodes;
+  return 0;
 }
 
 /// Reads the file line by line and refuses, with the file and line, what gmsh would misread.
