@@ -28,9 +28,14 @@ std::string FluidContinuityCheck::update(double time, std::size_t n_fluid)
   s.precision(4);
   s << "warning: the fluid is tearing: " << n_fluid << " fluid particles at t = " << time << " s, "
     << 100 * drop(n_fluid) << " % fewer than the " << start_ << " at the start (limit "
-    << 100 * warning_fraction_
-    << " %): the outlets take out more than the inlets bring and a void is opening "
-       "(docs/sph.md, \"Internal flows that tear\")";
+    << 100 * warning_fraction_ << " %): the outlets take out more than the inlets bring";
+  if (background_pressure_ > 0)
+    s << ": a void is opening, or, under the background pressure of " << background_pressure_
+      << " Pa, the particles are thinning evenly, which shifts the gauge pressures by about "
+      << 2 * background_pressure_ * drop(n_fluid) << " Pa (docs/sph.md, \"Internal flows that "
+      << "tear\", \"What the background pressure costs\")";
+  else
+    s << " and a void is opening (docs/sph.md, \"Internal flows that tear\")";
   return s.str();
 }
 

@@ -218,7 +218,10 @@ int run_command(const Arguments& args)
   const std::vector<std::string> columns = sim->probe_columns();
   ProbeOutput probes(dir + "/probes.csv", columns, root);
   // The run's watches: the fluid's continuity and, when the case asks, the jam.
-  FluidContinuityCheck continuity(case_file.tear_warning_fraction);
+  FluidContinuityCheck continuity(case_file.tear_warning_fraction,
+                                  case_file.dimension == 2
+                                      ? case_file.case_2d.fluid.background_pressure
+                                      : case_file.case_3d.fluid.background_pressure);
   const bool open_boundaries = case_file.dimension == 2
                                    ? !case_file.case_2d.open_boundaries.empty()
                                    : !case_file.case_3d.open_boundaries.empty();
