@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds, and runs every test (Catch2 unit tests and the
 # CTest validation cases). `ctest -LE validation` skips the validation runs. Tests labelled
-# `long` (several minutes each: the 2D dam break's whole 2 s run, the clamped 3D plate under
-# a water column) are left out unless CHIPFLEX_LONG_TESTS=1; `ctest -L long` runs only them.
+# `long` (several minutes each; docs/testing.md lists them) are left out unless
+# CHIPFLEX_LONG_TESTS=1; `ctest -L long` runs only them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_dependencies.sh

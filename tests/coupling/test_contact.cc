@@ -322,7 +322,7 @@ TEST_CASE("contact: a 3D box of triangles dropped on the floor bounces to e^2 h0
 }
 
 TEST_CASE("contact: a 3D box sticks on an incline below tan(phi) = mu and slides above",
-          "[coupling][contact]")
+          "[coupling][contact][heavy]")
 {
   const double mu = 0.4;
   double distance = 0;

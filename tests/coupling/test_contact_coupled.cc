@@ -129,7 +129,7 @@ struct StripOnBarrier
 } // namespace
 
 TEST_CASE("a chip-like strip sinks through water and rests on a permeable barrier",
-          "[coupling][contact]")
+          "[coupling][contact][heavy]")
 {
   StripOnBarrier run;
   auto& fluid = run.fluid;

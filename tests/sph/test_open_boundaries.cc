@@ -192,7 +192,8 @@ TEST_CASE("a restart refuses a checkpoint without the case's open boundaries",
   std::remove(path.c_str());
 }
 
-TEST_CASE("a 3D duct with an inlet and an outlet keeps its mass balance", "[sph][open boundaries]")
+TEST_CASE("a 3D duct with an inlet and an outlet keeps its mass balance",
+          "[sph][open boundaries][heavy]")
 {
   // 6 x 6 particles across a 6 mm square duct, 12 mm long, U = 0.1 m/s for 0.04 s (four
   // buffer layers' worth of inflow).
@@ -368,7 +369,7 @@ TEST_CASE("walls beside an outlet stay bounded, with and without a background pr
 }
 
 TEST_CASE("an inlet given a flow rate feeds it through the section its fluid fills",
-          "[sph][open boundaries]")
+          "[sph][open boundaries][heavy]")
 {
   // A 3D duct 10 mm square whose fluid fills only the triangle y + z < 10 mm (a shaped
   // section, as geometry/fluid region gives): the buffer box's section is 1e-4 m^2, the

@@ -71,7 +71,7 @@ double lone_particle_path_error(const RotatingFrame& frame)
 } // namespace
 
 TEST_CASE("lone fluid particles in a turning frame follow their lab rest turned back",
-          "[sph][rotating_frame]")
+          "[sph][rotating_frame][heavy]")
 {
   RotatingFrame frame;
   frame.axis_point = Eigen::Vector3d(0.02, -0.03, 0);
@@ -91,7 +91,7 @@ TEST_CASE("lone fluid particles in a turning frame follow their lab rest turned 
 }
 
 TEST_CASE("water turning with its closed tank: p - p(axis) = rho Omega^2 r^2 / 2",
-          "[sph][rotating_frame]")
+          "[sph][rotating_frame][heavy]")
 {
   // A square tank 0.24 m wide around the axis, full, dummy-particle walls, at rest in a
   // frame turning at 20 rad/s from the start (the lab's rigid rotation, an exact steady

@@ -113,7 +113,7 @@ TEST_CASE("a 3D quad mesh's dummy layer carries about one particle per dp^2", "[
 }
 
 TEST_CASE("a lid sliding in place keeps its dummy particles at the fluid's pressure",
-          "[sph][walls]")
+          "[sph][walls][heavy]")
 {
   const Cavity held = run_cavity(true);
   const Cavity dynamic = run_cavity(false);
