@@ -72,6 +72,20 @@ void declare_fluid_keys(ParameterHandler& prm)
                     "boundaries stay gauge pressures. Internal flows only: at a free surface "
                     "or a Lennard-Jones wall it pushes the fluid outwards or into the wall "
                     "(docs/sph.md, \"Background pressure\").");
+  prm.declare_entry("density", "continuity", Selection("continuity|summation"),
+                    "How the fluid's density is formed. continuity: integrated from the "
+                    "continuity equation (DualSPHysics; any flow, free surfaces included). "
+                    "summation: the continuity density moved, in every step, `summation "
+                    "blend` of the way to the kernel sum rho0 sum_j W_ij / sum_lattice W, so "
+                    "it follows the particles' spacing and a channel that loses particles "
+                    "through its outlet draws fluid back. Internal flows only: at a free "
+                    "surface the truncated support reads as sparse (docs/sph.md, \"Summation "
+                    "density\").");
+  prm.declare_entry("summation blend", "0.1", Double(0, 1),
+                    "With `density = summation`: the fraction of the way from the continuity "
+                    "density to the kernel sum taken in every step (1: the plain sum, which "
+                    "turns a starting lattice's misfit beside curved walls into a pressure "
+                    "kick).");
   prm.declare_entry("no slip walls", fluid.no_slip_walls ? "true" : "false", Bool(),
                     "Dummy wall particles take 2 v_wall - v_fluid at their mirror point across "
                     "the face (the no-slip velocity of the modified DBC, English et al. 2022), "
@@ -178,6 +192,7 @@ std::string read_fluid_keys(ParameterHandler& prm, sph::CaseDescription<dim>& c)
     f.maximum_density_ratio = limits[1] / f.reference_density;
   }
   f.no_slip_walls = prm.get_bool("no slip walls");
+  f.summation_blend = prm.get("density") == "summation" ? prm.get_double("summation blend") : 0;
   const std::string shifting = prm.get("particle shifting");
   f.shifting_coefficient = shifting == "off" ? 0 : prm.get_double("shifting coefficient");
   c.hydrostatic_start = prm.get_bool("hydrostatic start");

@@ -190,6 +190,9 @@ std::string FluidSimulation<dim>::summary() const
   if (p.shifting_coefficient > 0)
     s << "particle shifting: D = " << p.shifting_coefficient
       << " h |v| dt, none at free surfaces\n";
+  if (p.summation_blend > 0)
+    s << "density: continuity, moved " << p.summation_blend
+      << " of the way to the kernel sum in every step (an internal flow)\n";
   if (p.background_pressure > 0)
   {
     s << "background pressure " << p.background_pressure

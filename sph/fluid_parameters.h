@@ -100,6 +100,16 @@ struct FluidParameters
   /// For internal flows: at a free surface or a Lennard-Jones wall the support is
   /// truncated and the background pressure pushes the fluid outwards or into the wall.
   double background_pressure = 0;
+  /// Each force pass moves the fluid's density this fraction of the way from its
+  /// continuity value to the kernel sum rho0 sum_j W_ij / sum_lattice W (0: the continuity
+  /// equation alone; sph/fluid_solver_summation_density.cc). The density then follows the
+  /// particles' spacing, so a channel that loses particles through its outlet loses
+  /// pressure and draws fluid back, where the continuity density lets it spread thin
+  /// unnoticed. A fraction, not the plain sum: a starting lattice beside a curved wall
+  /// sums a few per cent off rho0, and the plain sum turns that into a pressure kick at
+  /// the first step. Internal flows only: a free surface's truncated support reads as
+  /// sparse. Wall and buffer particles keep their own densities.
+  double summation_blend = 0;
   /// Dummy wall particles take 2 v_wall - v_fluid(mirror point) instead of the wall's
   /// velocity (the no-slip velocity of English et al.'s modified DBC, 2022): the
   /// no-slip surface is the wall face, not the first dummy layer half a spacing behind

@@ -286,6 +286,8 @@ private:
   void mirror_wall_velocities();
   void collect_walls_from_fluid();
   void extrapolate_wall_densities();
+  /// Moves the fluid's density towards its kernel sum (FluidParameters::summation_blend).
+  void sum_densities();
   void shift_particles(double dt);
   /// Sides of the boundary particles [first, last) from their faces (thin skins).
   void update_dummy_sides(std::size_t first, std::size_t last);

@@ -63,10 +63,17 @@ void FluidSolver<dim>::Impl::setup(const FluidParameters<dim>& p, bool sided)
   // Lattice points strictly inside the support 2h of a lattice point (itself included).
   const int reach = int(std::ceil(2 * h / p.particle_spacing));
   long full = 0;
+  double lattice_sum = 0;
   for (int a = -reach; a <= reach; ++a)
     for (int b = -reach; b <= reach; ++b)
       for (int c = dim == 3 ? -reach : 0; c <= (dim == 3 ? reach : 0); ++c)
-        full += (a * a + b * b + c * c) * p.particle_spacing * p.particle_spacing < 4 * h * h;
+      {
+        const double r = std::sqrt(double(a * a + b * b + c * c)) * p.particle_spacing;
+        full += r < 2 * h;
+        const double t = std::max(0.0, 1 - r / (2 * h));
+        lattice_sum += t * t * t * t * (5 - 4 * t);
+      }
+  inverse_lattice_sum = 1 / lattice_sum;
   fill_factor = float(1.0 / double(full));
   const float eta2 = float(0.01 * h * h);
   policies.artificial = {float(-2 * p.artificial_viscosity * c0 * h), eta2};
@@ -182,6 +189,8 @@ void FluidSolver<dim>::force_pass()
     extrapolate_wall_densities();
   if (parameters_.no_slip_walls)
     mirror_wall_velocities();
+  if (parameters_.summation_blend > 0)
+    sum_densities();
   auto& p = particles_;
   auto& im = *impl_;
   const std::size_t nb = p.n_boundary, n = p.size();

@@ -72,6 +72,8 @@ struct FluidSolver<dim>::Impl
   std::array<std::vector<float>, dim> shift_sum;
   std::vector<float> position_divergence, closest;
   float inverse_w_dp = 0;
+  /// 1 / sum of t^4 (5 - 4t) over a full lattice support (summation density).
+  double inverse_lattice_sum = 0;
   /// Over MPI, by particle: its sums are needed on this rank (ForcePassInput::active).
   std::vector<std::uint8_t> active;
   TaitEquationOfState eos{1000, 10, 7};
