@@ -68,9 +68,9 @@ void FluidSolver<dim>::Impl::setup(const FluidParameters<dim>& p, bool sided)
     for (int b = -reach; b <= reach; ++b)
       for (int c = dim == 3 ? -reach : 0; c <= (dim == 3 ? reach : 0); ++c)
       {
-        const double r = std::sqrt(double(a * a + b * b + c * c)) * p.particle_spacing;
-        full += r < 2 * h;
-        const double t = std::max(0.0, 1 - r / (2 * h));
+        const double r2 = (a * a + b * b + c * c) * p.particle_spacing * p.particle_spacing;
+        full += r2 < 4 * h * h;
+        const double t = std::max(0.0, 1 - std::sqrt(r2) / (2 * h));
         lattice_sum += t * t * t * t * (5 - 4 * t);
       }
   inverse_lattice_sum = 1 / lattice_sum;
