@@ -12,7 +12,10 @@ cd "$(dirname "$0")/.."
 bash scripts/install_dependencies.sh clang libclang-rt-14-dev
 fuzzers=(fuzz_gmsh_mesh fuzz_surface_mesh fuzz_body_file fuzz_fmu_description fuzz_case_file)
 unit_tests=(test_common test_mbs test_sph test_coupling)
+# -O1, as the sanitizers' authors advise: the build takes about two thirds of -O3's time
+# (the stage's largest part on 2 cores) and the checks find the same faults.
 CC=clang CXX=clang++ cmake -S . -B build_sanitize -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELEASE="-O1 -DNDEBUG" \
   -DCHIPFLEX_FUZZ=ON -DCHIPFLEX_NATIVE=OFF > /dev/null
 cmake --build build_sanitize -j"$(nproc)" --target "${fuzzers[@]}" "${unit_tests[@]}"
 cd build_sanitize
