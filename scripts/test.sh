@@ -8,12 +8,11 @@ cd "$(dirname "$0")/.."
 bash scripts/install_dependencies.sh
 bash scripts/build.sh
 cd build
-# OpenMPI refuses to run as root unless told; the MPI tests run mpirun.
 # The spin count that chipflex and the test programs would set for themselves by starting
 # again (common/openmp_waiting.h): set here, it spares each of the suite's hundreds of
-# processes
-# that second start, about 0.4 s of loading 200 shared libraries each.
+# processes that second start, about 0.4 s of loading 200 shared libraries each.
 export GOMP_SPINCOUNT=${GOMP_SPINCOUNT:-1000}
+# OpenMPI refuses to run as root unless told; the MPI tests run mpirun.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 skip_long=(-LE long)
 [ "${CHIPFLEX_LONG_TESTS:-0}" = 1 ] && skip_long=()
