@@ -190,7 +190,13 @@ void FluidSolver<dim>::force_pass()
   if (parameters_.no_slip_walls)
     mirror_wall_velocities();
   if (parameters_.summation_blend > 0)
+  {
     sum_densities();
+    // The owners' densities moved after this step's exchange: the ghosts take them again,
+    // or a pair across two ranks would see two pressures for one particle.
+    if (exchange_)
+      exchange_->refresh_ghosts(particles_, true);
+  }
   auto& p = particles_;
   auto& im = *impl_;
   const std::size_t nb = p.n_boundary, n = p.size();

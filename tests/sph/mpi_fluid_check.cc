@@ -6,6 +6,8 @@
 //                       scheme, particle shifting, laminar viscosity
 //           cavity2d    a lid-driven cavity (Re 50) whose lid slides in place: a wall
 //                       that reads the fluid's density at mirror points
+//           cavity2d_summation  the cavity with the summation density and a background
+//                       pressure (the owners' densities move after the exchange)
 //           dambreak3d  a small 3D column, dp 0.04, Verlet, dummy walls
 //
 // While it runs, every 100 steps: the halo holds exactly what it must (every ghost is a
@@ -116,6 +118,18 @@ CaseDescription<2> cavity_2d()
   lid.faces = {{0, 1}};
   lid.slides_in_place = true;
   c.walls.push_back(lid);
+  return c;
+}
+
+/// The cavity with its density taken by summation (FluidParameters::summation_blend) and a
+/// background pressure: the owners' densities change inside the force pass, after the
+/// exchange, so the halo check right after the forces sees whether the ghosts follow.
+CaseDescription<2> cavity_2d_summation()
+{
+  CaseDescription<2> c = cavity_2d();
+  c.fluid.summation_blend = 0.1;
+  c.fluid.background_pressure = 0.05 * c.fluid.reference_density *
+                                c.fluid.speed_of_sound * c.fluid.speed_of_sound;
   return c;
 }
 
@@ -357,7 +371,7 @@ int main(int argc, char** argv)
   MpiSession session;
   if (argc != 3)
   {
-    std::fprintf(stderr, "usage: mpi_fluid_check dambreak2d|box2d|cavity2d|dambreak3d END_TIME\n");
+    std::fprintf(stderr, "usage: mpi_fluid_check dambreak2d|box2d|cavity2d|cavity2d_summation|dambreak3d END_TIME\n");
     return 2;
   }
   const std::string name = argv[1];
@@ -369,6 +383,8 @@ int main(int argc, char** argv)
     status = run<2>(name, box_2d(), end_time);
   else if (name == "cavity2d")
     status = run<2>(name, cavity_2d(), end_time);
+  else if (name == "cavity2d_summation")
+    status = run<2>(name, cavity_2d_summation(), end_time);
   else if (name == "dambreak3d")
     status = run<3>(name, dam_break_3d(), end_time);
   else
