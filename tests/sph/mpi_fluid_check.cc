@@ -128,8 +128,8 @@ CaseDescription<2> cavity_2d_summation()
 {
   CaseDescription<2> c = cavity_2d();
   c.fluid.summation_blend = 0.1;
-  c.fluid.background_pressure = 0.05 * c.fluid.reference_density *
-                                c.fluid.speed_of_sound * c.fluid.speed_of_sound;
+  c.fluid.background_pressure =
+      0.05 * c.fluid.reference_density * c.fluid.speed_of_sound * c.fluid.speed_of_sound;
   return c;
 }
 
@@ -371,7 +371,8 @@ int main(int argc, char** argv)
   MpiSession session;
   if (argc != 3)
   {
-    std::fprintf(stderr, "usage: mpi_fluid_check dambreak2d|box2d|cavity2d|cavity2d_summation|dambreak3d END_TIME\n");
+    std::fprintf(stderr, "usage: mpi_fluid_check "
+                         "dambreak2d|box2d|cavity2d|cavity2d_summation|dambreak3d END_TIME\n");
     return 2;
   }
   const std::string name = argv[1];
