@@ -236,7 +236,38 @@ std::string FluidSimulation<dim>::flow_summary() const
       c << (d ? "," : "") << fluid_->closest_fluid_pair_position()[d];
     s += c.str();
   }
+  // Under a background pressure: how much of the fluid went into tension (the
+  // background pressure did not cover the suction there).
+  if (p.background_pressure > 0)
+  {
+    std::ostringstream c;
+    c.precision(3);
+    c << " tension_peak_percent=" << 100 * fluid_->tension_peak_fraction()
+      << " tension_peak_t_s=" << fluid_->tension_peak_time();
+    if (fluid_->lowest_absolute_pressure() < 1e300)
+      c << " lowest_absolute_pressure_pa=" << fluid_->lowest_absolute_pressure();
+    s += c.str();
+  }
   return s;
+}
+
+template <int dim>
+std::string FluidSimulation<dim>::tension_warning() const
+{
+  const auto& p = fluid_->parameters();
+  if (!(p.background_pressure > 0) || fluid_->tension_peak_fraction() <= tension_warning_fraction)
+    return "";
+  std::ostringstream s;
+  s.precision(3);
+  s << "warning: " << 100 * fluid_->tension_peak_fraction()
+    << " % of the fluid was in tension (a mean over 100 h / c0) at t = "
+    << fluid_->tension_peak_time() << " s (absolute pressure below 0, the lowest "
+    << fluid_->lowest_absolute_pressure() << " Pa): the background pressure of "
+    << p.background_pressure
+    << " Pa does not cover the flow's suction, and particles in tension pull each other "
+       "into pairs (clumping); raise the background pressure (docs/sph.md, \"Background "
+       "pressure\", \"Tension\")";
+  return s.str();
 }
 
 template <int dim>

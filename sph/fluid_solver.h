@@ -238,6 +238,15 @@ public:
   double closest_fluid_pair_time() const { return closest_pair_time_; }
   /// Where the closest pair was: one of its two particles (m).
   const Vector& closest_fluid_pair_position() const { return closest_pair_position_; }
+  /// Under a background pressure: the largest fraction of the fluid particles in tension
+  /// (absolute pressure, background included, below 0), as a running mean over 100 h /
+  /// c0, so far, when it was, and the lowest absolute pressure of any fluid particle, Pa. Where the
+  /// wake's suction exceeds the background pressure the sum form of the pressure force pulls
+  /// particles into pairs (the tensile instability); a flow whose background pressure
+  /// covers its suction has none. Zero and +infinity without a background pressure.
+  double tension_peak_fraction() const { return tension_peak_; }
+  double tension_peak_time() const { return tension_peak_time_; }
+  double lowest_absolute_pressure() const { return lowest_absolute_pressure_; }
   /// Every particle (fluid and boundary) has the mass rho0 dp^dim (2D: per metre).
   double particle_mass() const { return mass_; }
   double speed_of_sound() const { return parameters_.speed_of_sound; }
@@ -289,6 +298,9 @@ private:
   /// Moves the fluid's density towards its kernel sum (FluidParameters::summation_blend).
   void sum_densities();
   void shift_particles(double dt);
+  /// Under a background pressure: counts the fluid particles in tension after the
+  /// pressures of a force pass (tension_peak_fraction()).
+  void record_tension();
   /// Sides of the boundary particles [first, last) from their faces (thin skins).
   void update_dummy_sides(std::size_t first, std::size_t last);
   /// Sides of the fluid particles near thin skins, the guard (sph/thin_skins.h).
@@ -323,6 +335,8 @@ private:
   Vector peak_speed_position_ = Vector::Zero();
   double closest_pair_ = std::numeric_limits<double>::infinity(), closest_pair_time_ = 0;
   Vector closest_pair_position_ = Vector::Zero();
+  double tension_peak_ = 0, tension_peak_time_ = 0, tension_mean_ = 0, tension_mean_time_ = 0;
+  double lowest_absolute_pressure_ = std::numeric_limits<double>::infinity();
 
   std::shared_ptr<ParticleExchange<dim>> exchange_;
   struct Impl;

@@ -88,6 +88,14 @@ void FluidSolver<dim>::save(Hdf5File* file_pointer, const std::string& group) co
       file.write_attribute(group, "closest_fluid_pair_position_" + std::to_string(d),
                            closest_pair_position_[d]);
   }
+  if (parameters_.background_pressure > 0)
+  {
+    file.write_attribute(group, "tension_peak_fraction", tension_peak_);
+    file.write_attribute(group, "tension_peak_time", tension_peak_time_);
+    file.write_attribute(group, "lowest_absolute_pressure", lowest_absolute_pressure_);
+    file.write_attribute(group, "tension_mean", tension_mean_);
+    file.write_attribute(group, "tension_mean_time", tension_mean_time_);
+  }
   const std::size_t nl = lost_.size();
   file.write_attribute(group, "n_lost", std::int64_t(nl));
   if (nl > 0)
@@ -253,6 +261,16 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
       if (file.has_attribute(group, "closest_fluid_pair_position_" + std::to_string(d)))
         closest_pair_position_[d] =
             file.read_double_attribute(group, "closest_fluid_pair_position_" + std::to_string(d));
+  }
+  tension_peak_ = tension_peak_time_ = tension_mean_ = tension_mean_time_ = 0;
+  lowest_absolute_pressure_ = std::numeric_limits<double>::infinity();
+  if (file.has_attribute(group, "tension_peak_fraction"))
+  {
+    tension_peak_ = file.read_double_attribute(group, "tension_peak_fraction");
+    tension_peak_time_ = file.read_double_attribute(group, "tension_peak_time");
+    lowest_absolute_pressure_ = file.read_double_attribute(group, "lowest_absolute_pressure");
+    tension_mean_ = file.read_double_attribute(group, "tension_mean");
+    tension_mean_time_ = file.read_double_attribute(group, "tension_mean_time");
   }
   if (file.has_attribute(group, "n_lost"))
   {

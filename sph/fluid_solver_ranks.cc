@@ -30,6 +30,9 @@ void FluidSolver<dim>::share_run_records()
   mine.push_back(closest_pair_time_);
   for (int d = 0; d < dim; ++d)
     mine.push_back(closest_pair_position_[d]);
+  mine.push_back(tension_peak_);
+  mine.push_back(tension_peak_time_);
+  mine.push_back(lowest_absolute_pressure_);
   mine.push_back(double(impl_->n_guarded - impl_->n_guarded_shared));
   mine.push_back(double(lost_.size() - lost_shared_));
   for (std::size_t k = lost_shared_; k < lost_.size(); ++k)
@@ -65,6 +68,14 @@ void FluidSolver<dim>::share_run_records()
         closest_pair_position_[d] = r[2 + d];
     }
     r += 2 + dim;
+    // Each rank's fraction of its own fluid: the largest is at least the whole fluid's.
+    if (first || r[0] > tension_peak_)
+    {
+      tension_peak_ = r[0];
+      tension_peak_time_ = r[1];
+    }
+    lowest_absolute_pressure_ = first ? r[2] : std::min(lowest_absolute_pressure_, r[2]);
+    r += 3;
     impl_->n_guarded += std::size_t(r[0]);
     ++r;
     const std::size_t n_lost = std::size_t(r[0]);
