@@ -18,11 +18,12 @@ class Hdf5File;
 
 namespace chipflex::apps
 {
-/// Under a background pressure, the fraction of the fluid in tension at one force pass
-/// above which a run warns (Simulation::tension_warning). Pressure noise puts a few
-/// particles in tension in any weakly compressible flow: a quarter of a per cent on
-/// Turek & Hron's FSI2 at D/20; a channel whose background pressure is a third of its
-/// suction had 10 % and more (docs/sph.md, "Tension").
+/// Under a background pressure, the share of the fluid in tension (its running mean over
+/// 100 h / c0, sph::FluidSolver::tension_peak_fraction) above which a run warns
+/// (Simulation::tension_warning). Pressure noise puts a few particles in tension in any
+/// weakly compressible flow: 0.065 % on Turek & Hron's FSI2 at D/20, 0.15 % on the 2D
+/// drill flute; a channel whose background pressure does not cover its suction had 8.6
+/// and 11.8 % (docs/sph.md, "Tension").
 inline constexpr double tension_warning_fraction = 0.01;
 
 class Simulation
@@ -60,8 +61,8 @@ public:
   /// Open boundaries: " inflow_particles=N outflow_particles=M" for the summary line
   /// (particles created by the inlets and removed through the zones), "" without any.
   virtual std::string flow_summary() const { return ""; }
-  /// Under a background pressure: a one-line warning when more than
-  /// tension_warning_fraction of the fluid went into tension at some force pass (the
+  /// Under a background pressure: a one-line warning when the running mean of the share
+  /// of the fluid in tension passed tension_warning_fraction (the
   /// background pressure did not cover the suction; particles clump there); "" otherwise.
   virtual std::string tension_warning() const { return ""; }
   /// Open boundaries: the fluid's mass balance since the run's start, one summary.txt

@@ -238,12 +238,13 @@ public:
   double closest_fluid_pair_time() const { return closest_pair_time_; }
   /// Where the closest pair was: one of its two particles (m).
   const Vector& closest_fluid_pair_position() const { return closest_pair_position_; }
-  /// Under a background pressure: the largest fraction of the fluid particles in tension
-  /// (absolute pressure, background included, below 0), as a running mean over 100 h /
-  /// c0, so far, when it was, and the lowest absolute pressure of any fluid particle, Pa. Where the
-  /// wake's suction exceeds the background pressure the sum form of the pressure force pulls
-  /// particles into pairs (the tensile instability); a flow whose background pressure
-  /// covers its suction has none. Zero and +infinity without a background pressure.
+  /// Under a background pressure: the peak so far of the share of the fluid particles in
+  /// tension (absolute pressure, background included, below 0), a running mean over
+  /// 100 h / c0; when it was; and the lowest absolute pressure of any fluid particle, Pa.
+  /// Where a wake's suction exceeds the background pressure, the sum form of the pressure
+  /// force pulls particles into pairs (the tensile instability); a flow whose background
+  /// pressure covers its suction has none. Zero and +infinity without a background
+  /// pressure.
   double tension_peak_fraction() const { return tension_peak_; }
   double tension_peak_time() const { return tension_peak_time_; }
   double lowest_absolute_pressure() const { return lowest_absolute_pressure_; }
