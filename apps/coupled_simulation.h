@@ -54,7 +54,7 @@ public:
   }
   double peak_fluid_speed() const override { return fluid_.peak_fluid_speed(); }
   std::string flow_summary() const override { return fluid_.flow_summary(); }
-  std::string tension_warning() const override { return fluid_.tension_warning(); }
+  std::string flow_warnings() const override { return fluid_.flow_warnings(); }
   std::string mass_balance(std::size_t start) const override { return fluid_.mass_balance(start); }
   double peak_fluid_speed_time() const override { return fluid_.peak_fluid_speed_time(); }
   std::string peak_fluid_speed_where() const override { return fluid_.peak_fluid_speed_where(); }

@@ -223,19 +223,23 @@ std::string FluidSimulation<dim>::flow_summary() const
   if (fluid_->has_thin_skins())
     s += " guarded_particles=" + std::to_string(fluid_->n_guarded());
   // Particle shifting measures the closest fluid pair after every step: a clumping check
-  // (below 0.1 dp, two particles sit on one point).
+  // (below 0.1 dp, two particles sit on one point). The particles beside a thin skin,
+  // which are not shifted, have their own record.
   const auto& p = fluid_->parameters();
-  if (p.shifting_coefficient > 0 && fluid_->closest_fluid_pair() < 1e300)
+  const auto pair_keys = [&](const std::string& name, const sph::ClosestPairRecord<dim>& pair)
   {
+    if (p.shifting_coefficient <= 0 || !pair.seen())
+      return;
     std::ostringstream c;
     c.precision(3);
-    c << " closest_fluid_pair_dp=" << fluid_->closest_fluid_pair() / p.particle_spacing
-      << " closest_fluid_pair_t_s=" << fluid_->closest_fluid_pair_time()
-      << " closest_fluid_pair_at_m=";
+    c << " " << name << "_dp=" << pair.distance / p.particle_spacing << " " << name
+      << "_t_s=" << pair.time << " " << name << "_at_m=";
     for (int d = 0; d < dim; ++d)
-      c << (d ? "," : "") << fluid_->closest_fluid_pair_position()[d];
+      c << (d ? "," : "") << pair.position[d];
     s += c.str();
-  }
+  };
+  pair_keys("closest_fluid_pair", fluid_->closest_fluid_pair());
+  pair_keys("closest_skin_side_pair", fluid_->closest_skin_side_pair());
   // Under a background pressure: how much of the fluid went into tension (the
   // background pressure did not cover the suction there).
   if (p.background_pressure > 0)
@@ -252,22 +256,41 @@ std::string FluidSimulation<dim>::flow_summary() const
 }
 
 template <int dim>
-std::string FluidSimulation<dim>::tension_warning() const
+std::string FluidSimulation<dim>::flow_warnings() const
 {
   const auto& p = fluid_->parameters();
-  if (!(p.background_pressure > 0) || fluid_->tension_peak_fraction() <= tension_warning_fraction)
-    return "";
   std::ostringstream s;
   s.precision(3);
-  s << "warning: " << 100 * fluid_->tension_peak_fraction()
-    << " % of the fluid was in tension (a mean over 100 h / c0) at t = "
-    << fluid_->tension_peak_time() << " s (absolute pressure below 0, the lowest "
-    << fluid_->lowest_absolute_pressure() << " Pa): the background pressure of "
-    << p.background_pressure
-    << " Pa does not cover the flow's suction, and particles in tension pull each other "
-       "into pairs (clumping); raise the background pressure (docs/sph.md, \"Background "
-       "pressure\", \"Tension\")";
-  return s.str();
+  if (p.background_pressure > 0 && fluid_->tension_peak_fraction() > tension_warning_fraction)
+    s << "warning: " << 100 * fluid_->tension_peak_fraction()
+      << " % of the fluid was in tension (a mean over 100 h / c0) at t = "
+      << fluid_->tension_peak_time() << " s (absolute pressure below 0, the lowest "
+      << fluid_->lowest_absolute_pressure() << " Pa): the background pressure of "
+      << p.background_pressure
+      << " Pa does not cover the flow's suction, and particles in tension pull each other "
+         "into pairs (clumping); raise the background pressure (docs/sph.md, \"Background "
+         "pressure\", \"Tension\")\n";
+  const auto clumped = [&](const sph::ClosestPairRecord<dim>& pair, const char* where)
+  {
+    if (p.shifting_coefficient <= 0 || !pair.seen() ||
+        pair.distance >= clumping_warning_distance * p.particle_spacing)
+      return;
+    s << "warning: two fluid particles" << where << " came within "
+      << pair.distance / p.particle_spacing << " dp of each other at t = " << pair.time
+      << " s at (";
+    for (int d = 0; d < dim; ++d)
+      s << (d ? ", " : "") << pair.position[d];
+    s << "): particles clump there (closer than " << clumping_warning_distance
+      << " dp, their mutual pressure force vanishes), and the pressure there is noisy "
+         "(docs/sph.md, \"Particle shifting\")\n";
+  };
+  clumped(fluid_->closest_fluid_pair(),
+          fluid_->has_thin_skins() ? " away from the thin skins" : "");
+  clumped(fluid_->closest_skin_side_pair(), " beside a thin skin");
+  std::string all = s.str();
+  if (!all.empty())
+    all.pop_back(); // the last line's newline: the caller ends the lines it writes
+  return all;
 }
 
 template <int dim>

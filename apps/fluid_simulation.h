@@ -44,7 +44,7 @@ public:
   double peak_fluid_speed_time() const override { return fluid_->peak_fluid_speed_time(); }
   std::string peak_fluid_speed_where() const override;
   std::string flow_summary() const override;
-  std::string tension_warning() const override;
+  std::string flow_warnings() const override;
   std::string mass_balance(std::size_t start_fluid_particles) const override;
 
   sph::FluidSolver<dim>& fluid() { return *fluid_; }

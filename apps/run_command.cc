@@ -94,8 +94,8 @@ std::string write_summary(const std::string& dir, const Simulation& sim, std::si
     s << continuity.summary_line() << "\n" << sim.mass_balance(continuity.start()) << "\n";
   if (jam)
     s << jam->summary_line() << "\n";
-  if (const std::string tension = sim.tension_warning(); !tension.empty())
-    s << tension << "\n";
+  if (const std::string warnings = sim.flow_warnings(); !warnings.empty())
+    s << warnings << "\n";
   const std::string results = sim.finish(dir);
   if (!results.empty())
     s << results << "\n";

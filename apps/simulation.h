@@ -20,11 +20,19 @@ namespace chipflex::apps
 {
 /// Under a background pressure, the share of the fluid in tension (its running mean over
 /// 100 h / c0, sph::FluidSolver::tension_peak_fraction) above which a run warns
-/// (Simulation::tension_warning). Pressure noise puts a few particles in tension in any
+/// (Simulation::flow_warnings). Pressure noise puts a few particles in tension in any
 /// weakly compressible flow: 0.065 % on Turek & Hron's FSI2 at D/20, 0.15 % on the 2D
 /// drill flute; a channel whose background pressure does not cover its suction had 8.6
 /// and 11.8 % (docs/sph.md, "Tension").
 inline constexpr double tension_warning_fraction = 0.01;
+
+/// With particle shifting, the closest approach of two fluid particles, in particle
+/// spacings, below which a run warns that particles clump (Simulation::flow_warnings):
+/// at a tenth of the spacing two particles sit nearly on one point, where the kernel's
+/// gradient, and so their mutual pressure force, vanishes. Sound runs keep 0.36-0.66 dp
+/// (Turek & Hron's FSI2 at D/10); clumped ones reach 1e-3 dp and below (docs/sph.md,
+/// "Particle shifting").
+inline constexpr double clumping_warning_distance = 0.1;
 
 class Simulation
 {
@@ -61,10 +69,13 @@ public:
   /// Open boundaries: " inflow_particles=N outflow_particles=M" for the summary line
   /// (particles created by the inlets and removed through the zones), "" without any.
   virtual std::string flow_summary() const { return ""; }
-  /// Under a background pressure: a one-line warning when the running mean of the share
-  /// of the fluid in tension passed tension_warning_fraction (the
-  /// background pressure did not cover the suction; particles clump there); "" otherwise.
-  virtual std::string tension_warning() const { return ""; }
+  /// Warnings on the flow over the whole run, one line each ("" when none):
+  ///  - under a background pressure, the running mean of the share of the fluid in
+  ///    tension passed tension_warning_fraction (the background pressure did not cover
+  ///    the suction; particles clump there);
+  ///  - with particle shifting, two fluid particles came closer than
+  ///    clumping_warning_distance (among the shifted ones or beside a thin skin).
+  virtual std::string flow_warnings() const { return ""; }
   /// Open boundaries: the fluid's mass balance since the run's start, one summary.txt
   /// line "mass_balance: ..." (in, out, lost, stored and what is left over, kg; 2D per
   /// metre), given the number of fluid particles at the start; "" without any.

@@ -112,6 +112,18 @@ struct LostParticle
   std::string describe() const;
 };
 
+/// A record of the closest approach of two interacting fluid particles over a run: their
+/// distance (m; infinity before the first check), when, and where (one of the two).
+template <int dim>
+struct ClosestPairRecord
+{
+  double distance = std::numeric_limits<double>::infinity();
+  double time = 0;
+  Eigen::Matrix<double, dim, 1> position = Eigen::Matrix<double, dim, 1>::Zero();
+
+  bool seen() const { return distance < 1e300; }
+};
+
 enum class HookPoint
 {
   before_forces, ///< state at time(); move walls here
@@ -231,13 +243,13 @@ public:
   double peak_fluid_speed_time() const { return peak_speed_time_; }
   /// Where the fastest particle was then (tells a method's squeeze from the flow's jet).
   const Vector& peak_fluid_speed_position() const { return peak_speed_position_; }
-  /// Smallest distance between two interacting fluid particles seen at any step so far,
-  /// over the particles that are shifted (not in an open boundary's buffer, not beside a
-  /// thin skin); particle shifting only (its sums measure it; infinity otherwise), m.
-  double closest_fluid_pair() const { return closest_pair_; }
-  double closest_fluid_pair_time() const { return closest_pair_time_; }
-  /// Where the closest pair was: one of its two particles (m).
-  const Vector& closest_fluid_pair_position() const { return closest_pair_position_; }
+  /// Closest approach of two interacting fluid particles seen at any step so far, over
+  /// the particles that are shifted (not in an open boundary's buffer, not beside a thin
+  /// skin); particle shifting only (its sums measure it; not seen otherwise).
+  const ClosestPairRecord<dim>& closest_fluid_pair() const { return closest_pair_; }
+  /// The same over the fluid particles beside a thin skin (within its reach), which are
+  /// not shifted (sph/fluid_solver_shifting.cc says why); particle shifting only.
+  const ClosestPairRecord<dim>& closest_skin_side_pair() const { return closest_skin_pair_; }
   /// Under a background pressure: the peak so far of the share of the fluid particles in
   /// tension (absolute pressure, background included, below 0), a running mean over
   /// 100 h / c0; when it was; and the lowest absolute pressure of any fluid particle, Pa.
@@ -334,8 +346,7 @@ private:
   std::vector<std::int64_t> zone_created_, zone_removed_;
   double peak_speed_ = 0, peak_speed_time_ = 0;
   Vector peak_speed_position_ = Vector::Zero();
-  double closest_pair_ = std::numeric_limits<double>::infinity(), closest_pair_time_ = 0;
-  Vector closest_pair_position_ = Vector::Zero();
+  ClosestPairRecord<dim> closest_pair_, closest_skin_pair_;
   double tension_peak_ = 0, tension_peak_time_ = 0, tension_mean_ = 0, tension_mean_time_ = 0;
   double lowest_absolute_pressure_ = std::numeric_limits<double>::infinity();
 

@@ -13,6 +13,36 @@ namespace chipflex::sph
 {
 namespace
 {
+/// A closest-pair record as attributes NAME, NAME_time, NAME_position_d (none before
+/// its first check).
+template <int dim>
+void write_closest_pair(Hdf5File& file, const std::string& group, const std::string& name,
+                        const ClosestPairRecord<dim>& pair)
+{
+  if (!pair.seen())
+    return;
+  file.write_attribute(group, name, pair.distance);
+  file.write_attribute(group, name + "_time", pair.time);
+  for (int d = 0; d < dim; ++d)
+    file.write_attribute(group, name + "_position_" + std::to_string(d), pair.position[d]);
+}
+
+template <int dim>
+ClosestPairRecord<dim> read_closest_pair(const Hdf5File& file, const std::string& group,
+                                         const std::string& name)
+{
+  ClosestPairRecord<dim> pair;
+  if (!file.has_attribute(group, name))
+    return pair;
+  pair.distance = file.read_double_attribute(group, name);
+  pair.time = file.read_double_attribute(group, name + "_time");
+  for (int d = 0; d < dim; ++d)
+    if (const std::string at = name + "_position_" + std::to_string(d);
+        file.has_attribute(group, at)) // not in checkpoints older than the position
+      pair.position[d] = file.read_double_attribute(group, at);
+  return pair;
+}
+
 template <typename T>
 std::vector<double> widen(const std::vector<T>& a)
 {
@@ -80,14 +110,8 @@ void FluidSolver<dim>::save(Hdf5File* file_pointer, const std::string& group) co
   for (int d = 0; d < dim; ++d)
     file.write_attribute(group, "peak_fluid_speed_position_" + std::to_string(d),
                          peak_speed_position_[d]);
-  if (closest_pair_ < 1e300)
-  {
-    file.write_attribute(group, "closest_fluid_pair", closest_pair_);
-    file.write_attribute(group, "closest_fluid_pair_time", closest_pair_time_);
-    for (int d = 0; d < dim; ++d)
-      file.write_attribute(group, "closest_fluid_pair_position_" + std::to_string(d),
-                           closest_pair_position_[d]);
-  }
+  write_closest_pair(file, group, "closest_fluid_pair", closest_pair_);
+  write_closest_pair(file, group, "closest_skin_side_pair", closest_skin_pair_);
   if (parameters_.background_pressure > 0)
   {
     file.write_attribute(group, "tension_peak_fraction", tension_peak_);
@@ -250,18 +274,8 @@ void FluidSolver<dim>::load(const Hdf5File& file, const std::string& group)
   lost_.clear();
   peak_speed_ = peak_speed_time_ = 0;
   peak_speed_position_.setZero();
-  closest_pair_ = std::numeric_limits<double>::infinity();
-  closest_pair_time_ = 0;
-  closest_pair_position_.setZero();
-  if (file.has_attribute(group, "closest_fluid_pair"))
-  {
-    closest_pair_ = file.read_double_attribute(group, "closest_fluid_pair");
-    closest_pair_time_ = file.read_double_attribute(group, "closest_fluid_pair_time");
-    for (int d = 0; d < dim; ++d)
-      if (file.has_attribute(group, "closest_fluid_pair_position_" + std::to_string(d)))
-        closest_pair_position_[d] =
-            file.read_double_attribute(group, "closest_fluid_pair_position_" + std::to_string(d));
-  }
+  closest_pair_ = read_closest_pair<dim>(file, group, "closest_fluid_pair");
+  closest_skin_pair_ = read_closest_pair<dim>(file, group, "closest_skin_side_pair");
   tension_peak_ = tension_peak_time_ = tension_mean_ = tension_mean_time_ = 0;
   lowest_absolute_pressure_ = std::numeric_limits<double>::infinity();
   if (file.has_attribute(group, "tension_peak_fraction"))

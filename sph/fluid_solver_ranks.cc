@@ -17,7 +17,7 @@ namespace chipflex::sph
 template <int dim>
 void FluidSolver<dim>::share_run_records()
 {
-  // One record per rank: its largest speed and closest pair (with when and where), the
+  // One record per rank: its largest speed and closest pairs (with when and where), the
   // fluid particles its thin skins' guard put back since the last share, then its losses
   // since the last share: [n, then per loss id, step, cause, time, rho, x].
   constexpr int loss_size = 5 + dim;
@@ -26,10 +26,13 @@ void FluidSolver<dim>::share_run_records()
   mine.push_back(peak_speed_time_);
   for (int d = 0; d < dim; ++d)
     mine.push_back(peak_speed_position_[d]);
-  mine.push_back(closest_pair_);
-  mine.push_back(closest_pair_time_);
-  for (int d = 0; d < dim; ++d)
-    mine.push_back(closest_pair_position_[d]);
+  for (const auto* pair : {&closest_pair_, &closest_skin_pair_})
+  {
+    mine.push_back(pair->distance);
+    mine.push_back(pair->time);
+    for (int d = 0; d < dim; ++d)
+      mine.push_back(pair->position[d]);
+  }
   mine.push_back(tension_peak_);
   mine.push_back(tension_peak_time_);
   mine.push_back(lowest_absolute_pressure_);
@@ -60,14 +63,17 @@ void FluidSolver<dim>::share_run_records()
         peak_speed_position_[d] = r[2 + d];
     }
     r += 2 + dim;
-    if (first || r[0] < closest_pair_)
+    for (auto* pair : {&closest_pair_, &closest_skin_pair_})
     {
-      closest_pair_ = r[0];
-      closest_pair_time_ = r[1];
-      for (int d = 0; d < dim; ++d)
-        closest_pair_position_[d] = r[2 + d];
+      if (first || r[0] < pair->distance)
+      {
+        pair->distance = r[0];
+        pair->time = r[1];
+        for (int d = 0; d < dim; ++d)
+          pair->position[d] = r[2 + d];
+      }
+      r += 2 + dim;
     }
-    r += 2 + dim;
     // Each rank's fraction of its own fluid: the largest is at least the whole fluid's.
     if (first || r[0] > tension_peak_)
     {

@@ -111,7 +111,7 @@ DisorderedBox run_disordered_box(double shifting)
     fluid->step();
   r.lost = fluid->lost_particles().size();
   r.end_closest = closest_pair(*fluid) / dp;
-  r.reported = fluid->closest_fluid_pair() / dp;
+  r.reported = fluid->closest_fluid_pair().distance / dp;
   return r;
 }
 } // namespace
