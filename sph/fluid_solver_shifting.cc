@@ -62,7 +62,8 @@ void FluidSolver<dim>::shift_particles(double dt)
   }
   const auto record = [&](float r2, std::size_t at, ClosestPairRecord<dim>& r)
   {
-    if (double(std::sqrt(r2)) >= r.distance)
+    // at == n: no particle of the kind was checked this step (a case without thin skins)
+    if (at == n || double(std::sqrt(r2)) >= r.distance)
       return;
     r.distance = std::sqrt(double(r2));
     r.time = time_ + dt;

@@ -1,6 +1,7 @@
 #!/bin/sh
 # `fluid/particle shifting`: automatic switches it on for an internal flow (a case with an
-# open boundary: the log states it and summary.txt reports the closest fluid pair) and
+# open boundary: the log states it and summary.txt reports the closest fluid pair, and no
+# pair beside thin skins, which it has none of) and
 # leaves a tank alone; `on` switches it on for a tank too; an unknown value is refused
 # with one line naming the key.
 #   usage: particle_shifting.sh CHIPFLEX SOURCE_DIR
@@ -14,6 +15,8 @@ fail() { echo "FAIL: $*"; exit 1; }
   fail "channel: $(tail -2 "$dir/channel.log")"
 grep -q "^particle shifting: D = 2 h |v| dt" "$dir/channel.log" || fail "the channel's log does not state the shifting"
 grep -q "closest_fluid_pair_dp=" "$dir/channel/summary.txt" || fail "no closest pair in the channel's summary.txt"
+grep -q "closest_skin_side_pair_dp=" "$dir/channel/summary.txt" &&
+  fail "a closest pair beside thin skins in a channel without any"
 
 "$chipflex" run "$cases/dam_break_2d.prm" --out "$dir/tank" --end-time 0.001 > "$dir/tank.log" 2>&1 ||
   fail "tank: $(tail -2 "$dir/tank.log")"
